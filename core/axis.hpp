@@ -1,0 +1,44 @@
+#pragma once
+// One coordinate direction of the rectilinear grid: the positions of its grid lines.
+//
+// Line coordinates are data: they may be uniform, stretched, or edited while a run goes on (the
+// body-fitted band moves and inserts lines). Everything derived from them (centres, widths) is computed
+// from the lines on demand or by Grid::update_geometry(), never assumed constant.
+#include <vector>
+
+namespace chute {
+
+class Axis {
+public:
+    Axis() = default;
+    Axis(std::vector<double> lines, bool periodic);
+
+    int cells() const { return static_cast<int>(lines_.size()) - 1; }
+    bool periodic() const { return periodic_; }
+    double start() const { return lines_.front(); }
+    double end() const { return lines_.back(); }
+    double length() const { return end() - start(); }
+    const std::vector<double>& lines() const { return lines_; }
+
+    // Line k for any k, also outside [0, cells]: beyond a boundary the lines are the mirror images of the
+    // interior ones (so a ghost cell mirrors its interior partner and the wall lies midway between their
+    // centres), or the periodic images.
+    double line(int k) const;
+    double centre(int k) const { return 0.5 * (line(k) + line(k + 1)); }
+    double width(int k) const { return line(k + 1) - line(k); }
+
+    void set_lines(std::vector<double> lines);
+
+private:
+    std::vector<double> lines_;
+    bool periodic_ = false;
+};
+
+// Line generators for the case file's `spacing` choices.
+std::vector<double> uniform_lines(double start, double end, int cells);
+// Lines clustered towards both ends (tanh stretching of strength beta > 0; beta -> 0 is uniform).
+std::vector<double> tanh_lines(double start, double end, int cells, double beta);
+// Lines growing geometrically from the start by `ratio` per cell.
+std::vector<double> geometric_lines(double start, double end, int cells, double ratio);
+
+}  // namespace chute

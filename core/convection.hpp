@@ -1,0 +1,22 @@
+#pragma once
+// Convective term of the momentum equation in conservative finite-volume form on the MAC grid.
+//
+// For the u control volume around face (i, j), of width dc_x(i) and height w_y(j):
+//   C_u = [ (U u)_e - (U u)_w ] / dc_x(i) + [ (V u)_n - (V u)_s ] / w_y(j)
+// The transporting velocities U, V are the volume fluxes through the control-volume faces (averages of
+// the neighbouring face velocities weighted by the part of the face in each cell, so that the discrete
+// continuity of the u control volume follows from that of the cells). The transported value is
+//   central:  linear interpolation to the face (second order, non-dissipative; for validation),
+//   van_leer, koren: upwind value plus a limited anti-diffusive correction (TVD, bounded; for high Re),
+//            phi_f = phi_U + 1/2 psi(r) (phi_D - phi_U),  r = (phi_U - phi_UU) / (phi_D - phi_U).
+// The v equation is the same with x and y exchanged.
+#include "case_config.hpp"
+#include "field.hpp"
+
+namespace chute {
+
+// out(i, j) = -C(i, j) on the faces [u_first, nx) x [0, ny) for u and [0, nx) x [v_first, ny) for v.
+void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first,
+                Velocity& out);
+
+}  // namespace chute

@@ -1,0 +1,75 @@
+#pragma once
+// The incompressible Navier-Stokes solver: state, and one time step of the projection method.
+//
+//   d u / dt + div(u u) = -grad p + nu laplacian(u) + f,      div u = 0
+//
+// One step (Adams-Bashforth 2 for convection and diffusion, Kim & Moin 1985 style projection):
+//   H^n  = -C(u^n) + nu L(u^n) + f
+//   u*   = u^n + dt [ (1 + r/2) H^n - (r/2) H^{n-1} ],     r = dt^n / dt^{n-1}   (variable-step AB2)
+//   boundary faces of u* (inflow, wall, outflow)
+//   laplacian(p^{n+1}) = div(u*) / dt                        (hypre PCG + PFMG)
+//   u^{n+1} = u* - dt grad p^{n+1}
+// The first step (and the first after a change of scheme) is forward Euler.
+#include <memory>
+
+#include "boundary_conditions.hpp"
+#include "case_config.hpp"
+#include "field.hpp"
+#include "halo_exchange.hpp"
+#include "poisson_solver.hpp"
+
+namespace chute {
+
+struct StepStats {
+    double dt = 0.0;
+    int poisson_iterations = 0;
+    double poisson_residual = 0.0;
+    double seconds_momentum = 0.0;   // prediction incl. boundary conditions
+    double seconds_poisson = 0.0;    // right-hand side, hypre solve
+    double seconds_correction = 0.0; // gradient correction, halo exchange
+};
+
+class FlowSolver {
+public:
+    FlowSolver(const CaseConfig& config, MPI_Comm comm);
+
+    // Impose the initial condition of the case (uniform current or Taylor-Green vortex) at time 0.
+    void set_initial_condition();
+    // Advance by one step of size dt (or the stable step if dt <= 0).
+    StepStats advance(double dt = 0.0);
+    // The step advance() would take: min of the CFL and diffusion limits, max_dt, or the fixed dt.
+    double next_dt() const;
+
+    const Grid& grid() const { return *grid_; }
+    const CaseConfig& config() const { return config_; }
+    const Velocity& velocity() const { return vel_; }
+    const Field2D& pressure() const { return p_; }
+    double time() const { return time_; }
+    long step() const { return step_; }
+
+    // State access for initial conditions, tests and checkpoints. After editing the velocity, call
+    // refresh_ghosts() so halos and boundary values are consistent.
+    Velocity& velocity() { return vel_; }
+    Field2D& pressure() { return p_; }
+    Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
+    double previous_dt() const { return dt_previous_; }
+    void restore(long step, double time, double dt_previous);
+    void refresh_ghosts();
+
+private:
+    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;
+
+    CaseConfig config_;
+    std::unique_ptr<Grid> grid_;
+    std::unique_ptr<HaloExchange> halo_;
+    std::unique_ptr<BoundaryConditions> bc_;
+    std::unique_ptr<PoissonSolver> poisson_;
+    Velocity vel_, star_, rhs_, rhs_old_;
+    Field2D p_, source_;
+    double time_ = 0.0, dt_previous_ = 0.0;
+    long step_ = 0;
+};
+
+Axis build_axis(const AxisConfig& c, bool periodic);
+
+}  // namespace chute

@@ -1,0 +1,154 @@
+#include "poisson_solver.hpp"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace chute {
+
+PoissonSolver::PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance,
+                             int max_iterations)
+    : grid_(grid), dirichlet_(dirichlet_sides), tolerance_(tolerance), max_iterations_(max_iterations) {
+    singular_ = !(dirichlet_[0] || dirichlet_[1] || dirichlet_[2] || dirichlet_[3]);
+    MPI_Comm comm = grid_.comm();
+    lower_ = {grid_.lx().offset, grid_.ly().offset};
+    upper_ = {grid_.lx().offset + grid_.nx() - 1, grid_.ly().offset + grid_.ny() - 1};
+    HYPRE_StructGridCreate(comm, 2, &hgrid_);
+    HYPRE_StructGridSetExtents(hgrid_, lower_.data(), upper_.data());
+    int periodic[2] = {grid_.x_axis().periodic() ? grid_.global_nx() : 0,
+                       grid_.y_axis().periodic() ? grid_.global_ny() : 0};
+    HYPRE_StructGridSetPeriodic(hgrid_, periodic);
+    HYPRE_StructGridAssemble(hgrid_);
+
+    // 5-point stencil: centre, west, east, south, north.
+    int offsets[5][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    HYPRE_StructStencilCreate(2, 5, &stencil_);
+    for (int e = 0; e < 5; ++e) HYPRE_StructStencilSetElement(stencil_, e, offsets[e]);
+
+    HYPRE_StructVectorCreate(comm, hgrid_, &b_);
+    HYPRE_StructVectorCreate(comm, hgrid_, &x_);
+    HYPRE_StructVectorInitialize(b_);
+    HYPRE_StructVectorInitialize(x_);
+    buffer_.resize(static_cast<std::size_t>(grid_.nx()) * grid_.ny());
+    update_matrix();
+}
+
+PoissonSolver::~PoissonSolver() {
+    destroy_solver();
+    if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
+    HYPRE_StructVectorDestroy(b_);
+    HYPRE_StructVectorDestroy(x_);
+    HYPRE_StructStencilDestroy(stencil_);
+    HYPRE_StructGridDestroy(hgrid_);
+}
+
+void PoissonSolver::destroy_solver() {
+    if (pcg_) HYPRE_StructPCGDestroy(pcg_);
+    if (pfmg_) HYPRE_StructPFMGDestroy(pfmg_);
+    pcg_ = pfmg_ = nullptr;
+}
+
+void PoissonSolver::update_matrix() {
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    const bool px = grid_.x_axis().periodic(), py = grid_.y_axis().periodic();
+    std::vector<double> values(static_cast<std::size_t>(nx) * ny * 5);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            // Coefficients of -V * laplacian: a_nb = A_f / d_f, diagonal = sum.
+            double w = Y.w(j) / X.dc(i), e = Y.w(j) / X.dc(i + 1);
+            double s = X.w(i) / Y.dc(j), n = X.w(i) / Y.dc(j + 1);
+            double diag = 0.0;
+            auto boundary = [&](double& a, Side side, bool at_side, bool periodic) {
+                if (!at_side || periodic) return;
+                if (dirichlet_[static_cast<int>(side)]) diag += 2.0 * a;  // p = 0 on the face: ghost -p
+                a = 0.0;
+            };
+            boundary(w, Side::left, grid_.touches(Side::left) && i == 0, px);
+            boundary(e, Side::right, grid_.touches(Side::right) && i == nx - 1, px);
+            boundary(s, Side::bottom, grid_.touches(Side::bottom) && j == 0, py);
+            boundary(n, Side::top, grid_.touches(Side::top) && j == ny - 1, py);
+            diag += w + e + s + n;
+            double* v = &values[5 * (static_cast<std::size_t>(j) * nx + i)];
+            v[0] = diag;
+            v[1] = -w;
+            v[2] = -e;
+            v[3] = -s;
+            v[4] = -n;
+        }
+    if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
+    HYPRE_StructMatrixCreate(grid_.comm(), hgrid_, stencil_, &matrix_);
+    HYPRE_StructMatrixSetSymmetric(matrix_, 0);
+    HYPRE_StructMatrixInitialize(matrix_);
+    int entries[5] = {0, 1, 2, 3, 4};
+    HYPRE_StructMatrixSetBoxValues(matrix_, lower_.data(), upper_.data(), 5, entries, values.data());
+    HYPRE_StructMatrixAssemble(matrix_);
+
+    destroy_solver();
+    HYPRE_StructPCGCreate(grid_.comm(), &pcg_);
+    HYPRE_StructPCGSetTol(pcg_, tolerance_);
+    HYPRE_StructPCGSetMaxIter(pcg_, max_iterations_);
+    HYPRE_StructPCGSetTwoNorm(pcg_, 1);  // stop on the true relative residual (STACK.md)
+    HYPRE_StructPCGSetRelChange(pcg_, 0);
+    HYPRE_StructPFMGCreate(grid_.comm(), &pfmg_);
+    HYPRE_StructPFMGSetMaxIter(pfmg_, 1);
+    HYPRE_StructPFMGSetTol(pfmg_, 0.0);
+    HYPRE_StructPFMGSetZeroGuess(pfmg_);
+    HYPRE_StructPFMGSetRelaxType(pfmg_, 1);  // weighted Jacobi: symmetric, as PCG needs
+    HYPRE_StructPFMGSetNumPreRelax(pfmg_, 1);
+    HYPRE_StructPFMGSetNumPostRelax(pfmg_, 1);
+    HYPRE_StructPCGSetPrecond(pcg_, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, pfmg_);
+    HYPRE_StructVectorAssemble(b_);
+    HYPRE_StructVectorAssemble(x_);
+    HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
+}
+
+PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double absolute_tolerance) {
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    MPI_Comm comm = grid_.comm();
+
+    double sums[2] = {0.0, 0.0};  // right-hand side, initial guess
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double b = -X.w(i) * Y.w(j) * source(i, j);
+            buffer_[static_cast<std::size_t>(j) * nx + i] = b;
+            sums[0] += b;
+        }
+    if (singular_) {
+        // Compatibility: the null space is the constants, so the right-hand side must sum to zero.
+        MPI_Allreduce(MPI_IN_PLACE, sums, 1, MPI_DOUBLE, MPI_SUM, comm);
+        const double mean = sums[0] / static_cast<double>(grid_.global_cells());
+        for (double& b : buffer_) b -= mean;
+    }
+    HYPRE_StructVectorSetBoxValues(b_, lower_.data(), upper_.data(), buffer_.data());
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) buffer_[static_cast<std::size_t>(j) * nx + i] = p(i, j);
+    HYPRE_StructVectorSetBoxValues(x_, lower_.data(), upper_.data(), buffer_.data());
+    HYPRE_StructVectorAssemble(b_);
+    HYPRE_StructVectorAssemble(x_);
+
+    HYPRE_StructPCGSetAbsoluteTol(pcg_, absolute_tolerance);
+    HYPRE_StructPCGSolve(pcg_, matrix_, b_, x_);
+    PoissonStats stats;
+    HYPRE_StructPCGGetNumIterations(pcg_, &stats.iterations);
+    HYPRE_StructPCGGetFinalRelativeResidualNorm(pcg_, &stats.relative_residual);
+    HYPRE_ClearAllErrors();  // non-convergence is reported through the stats, not hypre's error flag
+
+    HYPRE_StructVectorGetBoxValues(x_, lower_.data(), upper_.data(), buffer_.data());
+    double mean = 0.0;
+    if (singular_) {
+        double local = 0.0;
+        for (double v : buffer_) local += v;
+        MPI_Allreduce(&local, &mean, 1, MPI_DOUBLE, MPI_SUM, comm);
+        mean /= static_cast<double>(grid_.global_cells());
+    }
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) p(i, j) = buffer_[static_cast<std::size_t>(j) * nx + i] - mean;
+    return stats;
+}
+
+}  // namespace chute

@@ -1,0 +1,57 @@
+#pragma once
+// The pressure Poisson problem of the projection, solved with hypre's structured interface.
+//
+// Finite-volume form on cell (i, j) of volume V = w_x(i) w_y(j):
+//   sum over the four faces  A_f (p_nb - p_ij) / d_f  =  V * s_ij
+// with A_f the face length and d_f the distance between the two cell centres (mirrored ghost at a boundary).
+// Multiplied by -1 the matrix is symmetric positive (semi-)definite and solved with PCG preconditioned by
+// one PFMG V-cycle. Boundaries: Neumann (no flux) everywhere, except p = 0 on zero-stress outflows
+// (ghost p = -p_ij, d_f = w). With Neumann on all sides the matrix is singular: the right-hand side is
+// made zero-mean and the solution's mean is removed (keeping the matrix as it is; see STACK.md: pinning a
+// cell slows PFMG five-fold).
+#include <HYPRE_struct_ls.h>
+
+#include <array>
+#include <vector>
+
+#include "field.hpp"
+
+namespace chute {
+
+struct PoissonStats {
+    int iterations = 0;
+    double relative_residual = 0.0;
+};
+
+class PoissonSolver {
+public:
+    PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance, int max_iterations);
+    ~PoissonSolver();
+    PoissonSolver(const PoissonSolver&) = delete;
+    PoissonSolver& operator=(const PoissonSolver&) = delete;
+
+    // Rebuild the matrix and the multigrid hierarchy (after grid lines moved).
+    void update_matrix();
+    // Solve laplacian(p) = source; p holds the initial guess on entry (warm start) and the solution on exit.
+    // absolute_tolerance bounds the residual norm from below (for source ~ 0).
+    PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
+    bool singular() const { return singular_; }
+
+private:
+    void destroy_solver();
+
+    const Grid& grid_;
+    std::array<bool, 4> dirichlet_;
+    bool singular_;
+    double tolerance_;
+    int max_iterations_;
+    HYPRE_StructGrid hgrid_ = nullptr;
+    HYPRE_StructStencil stencil_ = nullptr;
+    HYPRE_StructMatrix matrix_ = nullptr;
+    HYPRE_StructVector b_ = nullptr, x_ = nullptr;
+    HYPRE_StructSolver pcg_ = nullptr, pfmg_ = nullptr;
+    std::vector<double> buffer_;
+    std::array<int, 2> lower_{}, upper_{};
+};
+
+}  // namespace chute

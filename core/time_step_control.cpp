@@ -1,0 +1,29 @@
+#include "time_step_control.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace chute {
+
+TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
+                                double diffusion_number) {
+    const auto& X = grid.lx();
+    const auto& Y = grid.ly();
+    double rate[2] = {0.0, 0.0};  // max convective rate |u|/dx + |v|/dy, max diffusive rate
+    for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 0; i < grid.nx(); ++i) {
+            const double uc = std::max(std::abs(vel.u(i, j)), std::abs(vel.u(i + 1, j)));
+            const double vc = std::max(std::abs(vel.v(i, j)), std::abs(vel.v(i, j + 1)));
+            const double ix = 1.0 / X.w(i), iy = 1.0 / Y.w(j);
+            rate[0] = std::max(rate[0], uc * ix + vc * iy);
+            rate[1] = std::max(rate[1], nu * (ix * ix + iy * iy));
+        }
+    MPI_Allreduce(MPI_IN_PLACE, rate, 2, MPI_DOUBLE, MPI_MAX, grid.comm());
+    const double inf = std::numeric_limits<double>::infinity();
+    return {rate[0] > 0.0 ? cfl / rate[0] : inf, rate[1] > 0.0 ? diffusion_number / rate[1] : inf};
+}
+
+}  // namespace chute

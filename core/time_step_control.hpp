@@ -1,0 +1,20 @@
+#pragma once
+// Adaptive time step for the explicit (Adams-Bashforth 2) momentum update:
+//   convection:  dt <= cfl / max(|u|/dx + |v|/dy)
+//   diffusion:   dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable for real eigenvalues down to
+//                lambda dt = -1, and the 5-point Laplacian's is -4 nu (1/dx^2 + 1/dy^2), so d <= 1/4.
+#include "field.hpp"
+
+namespace chute {
+
+struct TimeStepLimits {
+    double convective = 0.0;
+    double diffusive = 0.0;
+    double stable() const { return convective < diffusive ? convective : diffusive; }
+};
+
+// Global (all ranks) limits for the current velocity.
+TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
+                                double diffusion_number);
+
+}  // namespace chute
