@@ -76,6 +76,11 @@ void FlowSolver::restore(long step, double time, double dt_previous) {
     refresh_ghosts();
 }
 
+void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
+    grid_->set_lines(std::move(x_lines), std::move(y_lines));
+    poisson_->update_matrix();
+}
+
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
     const auto limits = time_step_limits(*grid_, vel_, config_.viscosity, config_.cfl, config_.diffusion_number);

@@ -54,6 +54,8 @@ public:
     Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
     double previous_dt() const { return dt_previous_; }
     void restore(long step, double time, double dt_previous);
+    // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
+    void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
 
 private:

@@ -1,0 +1,114 @@
+// chute: the command-line tool.
+//   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT] [--no-plots]
+//   chute keys            prints every case-file key (the table of docs/case-file.md)
+#include <CLI/CLI.hpp>
+#include <HYPRE_utilities.h>
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "case_file.hpp"
+#include "simulation.hpp"
+
+namespace {
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The case as run: the file as written, followed by the --set overrides applied to it.
+std::string case_as_run(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    std::string text = read_file(file);
+    if (!overrides.empty()) {
+        text += "\n# Overrides given on the command line (--set), applied on top of the keys above:\n";
+        for (const auto& o : overrides) text += "#   " + o + "\n";
+    }
+    return text;
+}
+
+int run_command(const std::filesystem::path& case_file, const std::filesystem::path& out_dir,
+                const std::vector<std::string>& overrides, const std::string& restart, bool no_plots) {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    chute::CaseConfig config = chute::load_case(case_file, overrides);
+    if (no_plots) config.plots = false;
+    chute::RunOptions options;
+    options.out_dir = out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
+    if (!restart.empty()) {
+        if (!std::filesystem::exists(restart)) throw chute::CaseError("--restart: no checkpoint file '" + restart + "'");
+        options.restart = restart;
+    }
+    options.case_yaml = case_as_run(case_file, overrides);
+    if (rank == 0)
+        std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n",
+                    config.name.c_str(), config.x.cells, config.y.cells, size, config.end_time,
+                    options.out_dir.string().c_str());
+    const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
+    if (rank == 0) {
+        const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
+        std::printf("%s", text.c_str());
+        std::ofstream(options.out_dir / "summary.txt") << text;
+        if (config.plots) {
+            const std::string cmd = "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
+            if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "chute: plotting failed (results are complete)\n");
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    MPI_Init(&argc, &argv);
+    HYPRE_Init();
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+
+    CLI::App app{"Chute: a rock block falling in water (and air). 2D incompressible flow solver."};
+    app.require_subcommand(1);
+    auto* run = app.add_subcommand("run", "run a case file");
+    std::filesystem::path case_file, out_dir;
+    std::vector<std::string> overrides;
+    std::string restart;
+    bool no_plots = false;
+    run->add_option("case", case_file, "case file (YAML)")->required();
+    run->add_option("--out", out_dir, "results folder (default results/<case name>)");
+    run->add_option("--set", overrides, "override a key: --set domain.x.cells=128 (repeatable)");
+    run->add_option("--restart", restart, "continue from this checkpoint file");
+    run->add_flag("--no-plots", no_plots, "do not make the PNG plots");
+    auto* keys = app.add_subcommand("keys", "print every case-file key with its type, default and range");
+
+    int code = 0;
+    try {
+        app.parse(argc, argv);
+        if (*keys) {
+            if (rank == 0) std::cout << chute::schema_markdown();
+        } else {
+            code = run_command(case_file, out_dir, overrides, restart, no_plots);
+        }
+    } catch (const CLI::ParseError& e) {
+        code = rank == 0 ? app.exit(e) : 2;
+        if (code == 0 && !e.get_exit_code()) code = 0;
+    } catch (const chute::CaseError& e) {
+        if (rank == 0) std::fprintf(stderr, "chute: error in the case: %s\n", e.what());
+        code = 2;
+    } catch (const chute::RunDiverged& e) {
+        if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
+        code = 3;
+    } catch (const std::exception& e) {
+        if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
+        code = 1;
+    }
+    HYPRE_Finalize();
+    MPI_Finalize();
+    return code;
+}

@@ -1,0 +1,1055 @@
+// Case files: YAML text -> table of key paths -> checks -> CaseConfig.
+//
+//   1. yaml-cpp parses the text; a syntax error becomes a CaseError with its line and column.
+//   2. Reader::add_document() walks the mappings and files every key under its full path
+//      ("boundaries.left.velocity"). A key the schema does not know is an error, with the nearest known
+//      key suggested (optimal string alignment distance) or the keys allowed there listed.
+//   3. Reader::add_override() applies each --set: it replaces (or adds) that path and its sub-keys.
+//   4. Reader::check_presence(): required keys are given; conditional keys (`when`) appear only where they
+//      apply and, when required, are given there.
+//   5. Reader::build(): typed reads against the schema (type, range, choices; absent keys take the
+//      schema's default, so the documented default is the one used), then the checks that involve
+//      several keys (end > start, periodic pairs, wall velocity tangential, probes inside, ...).
+#include "case_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <map>
+#include <sstream>
+#include <utility>
+
+namespace chute {
+
+namespace {
+
+constexpr Bound above(double v) { return {v, false}; }
+constexpr Bound at_least(double v) { return {v, true}; }
+constexpr Bound at_most(double v) { return {v, true}; }
+
+std::vector<CaseKey> make_schema() {
+    using K = KeyType;
+    const std::vector<std::string_view> from_ends = {"uniform", "tanh", "geometric"};
+    return {
+        {.path = "name",
+         .type = K::string,
+         .default_doc = "file stem",
+         .meaning = "Run name; output files are named after it. Default: the case file's name without "
+                    "its extension."},
+
+        {.path = "domain", .type = K::section, .required = true, .meaning = "The rectangle and its grid."},
+        {.path = "domain.<axis>",
+         .type = K::section,
+         .required = true,
+         .meaning = "Grid lines along x or along y."},
+        {.path = "domain.<axis>.start",
+         .type = K::number,
+         .required = true,
+         .when_key = "spacing",
+         .when_values = from_ends,
+         .units = "m",
+         .meaning = "First grid line: the left (x) or bottom (y) boundary."},
+        {.path = "domain.<axis>.end",
+         .type = K::number,
+         .required = true,
+         .when_key = "spacing",
+         .when_values = from_ends,
+         .units = "m",
+         .meaning = "Last grid line: the right (x) or top (y) boundary; must be greater than start."},
+        {.path = "domain.<axis>.cells",
+         .type = K::integer,
+         .required = true,
+         .min = at_least(2),
+         .when_key = "spacing",
+         .when_values = from_ends,
+         .meaning = "Number of cells."},
+        {.path = "domain.<axis>.spacing",
+         .type = K::choice,
+         .default_value = "uniform",
+         .choices = {"uniform", "tanh", "geometric", "lines"},
+         .meaning = "Placement of the lines: `uniform`; `tanh`, clustered towards both ends; `geometric`, "
+                    "each cell `ratio` times as wide as the one before; `lines`, listed one by one."},
+        {.path = "domain.<axis>.beta",
+         .type = K::number,
+         .default_value = "2.0",
+         .min = above(0),
+         .when_key = "spacing",
+         .when_values = {"tanh"},
+         .meaning = "Clustering strength of tanh spacing: larger is finer at the ends (towards 0: "
+                    "uniform)."},
+        {.path = "domain.<axis>.ratio",
+         .type = K::number,
+         .default_value = "1.05",
+         .min = above(0),
+         .when_key = "spacing",
+         .when_values = {"geometric"},
+         .meaning = "Width of each cell over the width of the one before it (geometric spacing)."},
+        {.path = "domain.<axis>.lines",
+         .type = K::number_list,
+         .required = true,
+         .when_key = "spacing",
+         .when_values = {"lines"},
+         .units = "m",
+         .meaning = "Every grid line, strictly increasing, at least 3; start, end and cells follow from "
+                    "them and are not given."},
+        {.path = "domain.depth",
+         .type = K::number,
+         .default_value = "1.0",
+         .min = above(0),
+         .units = "m",
+         .meaning = "Span (in z) that the 2D flow stands for; scales forces and flow rates."},
+
+        {.path = "fluid", .type = K::section, .required = true, .meaning = "Fluid properties."},
+        {.path = "fluid.density",
+         .type = K::number,
+         .default_value = "1000.0",
+         .min = above(0),
+         .units = "kg/m^3",
+         .meaning = "Density."},
+        {.path = "fluid.viscosity",
+         .type = K::number,
+         .required = true,
+         .min = above(0),
+         .units = "m^2/s",
+         .meaning = "Kinematic viscosity."},
+        {.path = "fluid.body_force",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .units = "m/s^2",
+         .meaning = "Constant acceleration on the fluid, e.g. gravity [0, -9.81]."},
+
+        {.path = "initial", .type = K::section, .meaning = "Initial velocity field."},
+        {.path = "initial.type",
+         .type = K::choice,
+         .default_value = "uniform",
+         .choices = {"uniform", "taylor_green"},
+         .meaning = "`uniform`: the constant `velocity` everywhere; `taylor_green`: Taylor-Green vortices "
+                    "of peak speed `amplitude`."},
+        {.path = "initial.velocity",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .when_key = "type",
+         .when_values = {"uniform"},
+         .units = "m/s",
+         .meaning = "Uniform initial velocity."},
+        {.path = "initial.amplitude",
+         .type = K::number,
+         .default_value = "1.0",
+         .when_key = "type",
+         .when_values = {"taylor_green"},
+         .units = "m/s",
+         .meaning = "Peak speed of the Taylor-Green vortices."},
+
+        {.path = "boundaries",
+         .type = K::section,
+         .required = true,
+         .meaning = "One condition per side; all four sides are required."},
+        {.path = "boundaries.<side>",
+         .type = K::section,
+         .required = true,
+         .meaning = "Condition on one side of the domain."},
+        {.path = "boundaries.<side>.type",
+         .type = K::choice,
+         .required = true,
+         .choices = {"wall", "slip", "inflow", "outflow", "periodic"},
+         .meaning = "`wall`: no slip, the wall moving at `velocity`; `slip`: free slip (no flow through, "
+                    "no shear stress); `inflow`: given velocity into the domain; `outflow`: open exit; "
+                    "`periodic`: the flow leaving here enters at the opposite side (set on both)."},
+        {.path = "boundaries.<side>.velocity",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .when_key = "type",
+         .when_values = {"wall", "inflow"},
+         .units = "m/s",
+         .meaning = "Wall: the wall's own velocity, along the wall (normal component 0). Inflow with "
+                    "`profile: uniform`: the inflow velocity (required there), pointing into the domain."},
+        {.path = "boundaries.<side>.profile",
+         .type = K::choice,
+         .default_value = "uniform",
+         .choices = {"uniform", "parabolic"},
+         .when_key = "type",
+         .when_values = {"inflow"},
+         .meaning = "Inflow profile: `uniform` (the vector `velocity`) or `parabolic` (normal to the side, "
+                    "zero at its ends, `peak` at its middle)."},
+        {.path = "boundaries.<side>.peak",
+         .type = K::number,
+         .required = true,
+         .min = above(0),
+         .when_key = "profile",
+         .when_values = {"parabolic"},
+         .units = "m/s",
+         .meaning = "Peak speed into the domain of a parabolic inflow."},
+        {.path = "boundaries.<side>.kind",
+         .type = K::choice,
+         .default_value = "convective",
+         .choices = {"convective", "zero_stress"},
+         .when_key = "type",
+         .when_values = {"outflow"},
+         .meaning = "Outflow condition: `convective` (du_n/dt + U du_n/dn = 0, U the mean exit speed: "
+                    "eddies leave cleanly) or `zero_stress` (du_n/dn = 0 and p = 0: zero normal stress)."},
+
+        {.path = "numerics", .type = K::section, .meaning = "Discretisation, time step and solver settings."},
+        {.path = "numerics.convection",
+         .type = K::choice,
+         .default_value = "central",
+         .choices = {"central", "van_leer", "koren"},
+         .meaning = "Convection scheme: `central` (second order) or a TVD scheme with the `van_leer` or "
+                    "`koren` limiter."},
+        {.path = "numerics.cfl",
+         .type = K::number,
+         .default_value = "0.5",
+         .min = above(0),
+         .max = at_most(1),
+         .meaning = "Courant number of the adaptive time step."},
+        {.path = "numerics.diffusion_number",
+         .type = K::number,
+         .default_value = "0.2",
+         .min = above(0),
+         .max = at_most(0.25),
+         .meaning = "Diffusion number d of the adaptive time step: dt <= d / (nu (1/dx^2 + 1/dy^2)); "
+                    "the explicit update is stable up to 1/4."},
+        {.path = "numerics.dt",
+         .type = K::number_or_auto,
+         .default_value = "auto",
+         .min = above(0),
+         .units = "s",
+         .meaning = "`auto`: dt follows cfl and diffusion_number each step; a number: fixed dt."},
+        {.path = "numerics.max_dt",
+         .type = K::number,
+         .default_value = "1.0e30",
+         .min = above(0),
+         .units = "s",
+         .meaning = "Upper limit of the time step."},
+        {.path = "numerics.poisson", .type = K::section, .meaning = "Pressure Poisson solver."},
+        {.path = "numerics.poisson.tolerance",
+         .type = K::number,
+         .default_value = "1.0e-8",
+         .min = above(0),
+         .max = at_most(1e-2),
+         .meaning = "Convergence tolerance (relative residual)."},
+        {.path = "numerics.poisson.max_iterations",
+         .type = K::integer,
+         .default_value = "200",
+         .min = at_least(1),
+         .meaning = "Iteration limit per solve."},
+        {.path = "numerics.divergence_limit",
+         .type = K::number,
+         .default_value = "1.0e-3",
+         .min = above(0),
+         .meaning = "The run stops with an error when max |div u| dt exceeds this."},
+
+        {.path = "time", .type = K::section, .required = true, .meaning = "Length of the run."},
+        {.path = "time.end",
+         .type = K::number,
+         .required = true,
+         .min = above(0),
+         .units = "s",
+         .meaning = "Simulated time at which the run ends."},
+        {.path = "time.max_steps",
+         .type = K::integer,
+         .default_value = "-1",
+         .min = at_least(1),
+         .also = -1,
+         .meaning = "Step limit; -1: none."},
+
+        {.path = "parallel", .type = K::section, .meaning = "Domain decomposition."},
+        {.path = "parallel.ranks",
+         .type = K::integer_vector2,
+         .default_value = "[0, 0]",
+         .min = at_least(0),
+         .meaning = "Number of MPI patches along x and y; 0: chosen automatically."},
+
+        {.path = "output", .type = K::section, .meaning = "What is written, and how often."},
+        {.path = "output.fields_interval",
+         .type = K::number,
+         .default_value = "0.0",
+         .min = at_least(0),
+         .units = "s",
+         .meaning = "Simulated time between field snapshots; 0: first and last only."},
+        {.path = "output.checkpoint_interval",
+         .type = K::number,
+         .default_value = "0.0",
+         .min = at_least(0),
+         .units = "s",
+         .meaning = "Simulated time between checkpoints; 0: at the end only."},
+        {.path = "output.checkpoints_kept",
+         .type = K::integer,
+         .default_value = "2",
+         .min = at_least(1),
+         .meaning = "Number of newest checkpoints kept; older ones are deleted."},
+        {.path = "output.timeseries_every",
+         .type = K::integer,
+         .default_value = "1",
+         .min = at_least(1),
+         .units = "steps",
+         .meaning = "Steps between rows of the time series."},
+        {.path = "output.progress_interval",
+         .type = K::number,
+         .default_value = "2.0",
+         .min = at_least(0),
+         .units = "s (wall)",
+         .meaning = "Wall-clock time between progress lines."},
+        {.path = "output.probes",
+         .type = K::point_list,
+         .default_value = "[]",
+         .units = "m",
+         .meaning = "Points [x, y] sampled into the time series; each must lie inside the domain."},
+        {.path = "output.plots",
+         .type = K::boolean,
+         .default_value = "true",
+         .meaning = "Write plots of the results."},
+    };
+}
+
+// ---- key paths -------------------------------------------------------------------------------------
+
+constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
+
+// The names a path segment stands for: a placeholder's values, or itself.
+std::vector<std::string_view> expand(std::string_view segment) {
+    if (segment == "<axis>") return {"x", "y"};
+    if (segment == "<side>") return {kSideNames.begin(), kSideNames.end()};
+    return {segment};
+}
+
+std::vector<std::string_view> split(std::string_view path) {
+    std::vector<std::string_view> parts;
+    if (path.empty()) return parts;
+    for (std::size_t begin = 0;;) {
+        const std::size_t dot = path.find('.', begin);
+        parts.push_back(path.substr(begin, dot == std::string_view::npos ? dot : dot - begin));
+        if (dot == std::string_view::npos) return parts;
+        begin = dot + 1;
+    }
+}
+
+std::string_view parent_of(std::string_view path) {
+    const std::size_t dot = path.rfind('.');
+    return dot == std::string_view::npos ? std::string_view{} : path.substr(0, dot);
+}
+
+std::string_view leaf_of(std::string_view path) {
+    const std::size_t dot = path.rfind('.');
+    return dot == std::string_view::npos ? path : path.substr(dot + 1);
+}
+
+std::string join(std::string_view parent, std::string_view leaf) {
+    return parent.empty() ? std::string(leaf) : std::string(parent) + "." + std::string(leaf);
+}
+
+std::string indexed(std::string_view path, std::size_t i) {
+    return std::string(path) + "[" + std::to_string(i) + "]";
+}
+
+// Does the concrete path ("boundaries.left.type") match the schema pattern ("boundaries.<side>.type")?
+bool matches(std::string_view pattern, std::string_view path) {
+    const auto a = split(pattern), b = split(path);
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const auto names = expand(a[i]);
+        if (std::find(names.begin(), names.end(), b[i]) == names.end()) return false;
+    }
+    return true;
+}
+
+const CaseKey* find_key(std::string_view path) {
+    for (const CaseKey& key : case_schema())
+        if (matches(key.path, path)) return &key;
+    return nullptr;
+}
+
+// The key names the schema allows directly under a concrete section ("" for the top level).
+std::vector<std::string> keys_under(std::string_view section) {
+    std::vector<std::string> names;
+    for (const CaseKey& key : case_schema())
+        if (matches(parent_of(key.path), section))
+            for (std::string_view name : expand(leaf_of(key.path))) names.emplace_back(name);
+    return names;
+}
+
+// ---- text helpers ----------------------------------------------------------------------------------
+
+std::string fmt(double v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+std::string list(const std::vector<std::string_view>& items, std::string_view last_sep = ", ") {
+    std::string s;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) s += (i + 1 == items.size()) ? last_sep : ", ";
+        s += items[i];
+    }
+    return s;
+}
+
+// The gist of a key's meaning, for a hint: its text up to the first '.', ';' or ':'.
+std::string gist(std::string_view text) {
+    std::size_t stop = text.size();
+    for (std::string_view mark : {". ", "; ", ": "}) stop = std::min(stop, text.find(mark));
+    std::string s(text.substr(0, stop));
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+// Optimal string alignment distance: edits, with a swap of neighbours counting as one.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// The candidate nearest to `word`, if it is near enough to be a likely typo.
+std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
+    const std::size_t limit = std::clamp<std::size_t>(word.size() / 3, 1, 3);
+    std::optional<std::string> best;
+    std::size_t best_distance = limit + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_distance) best = c, best_distance = d;
+    }
+    return best;
+}
+
+// The hint after "unknown key": the likely intended key, or the keys allowed there.
+std::string unknown_key_hint(std::string_view path) {
+    const std::string_view section = parent_of(path), name = leaf_of(path);
+    const std::vector<std::string> siblings = keys_under(section);
+    if (auto best = nearest(name, siblings)) return "; did you mean '" + join(section, *best) + "'?";
+    for (const CaseKey& key : case_schema())
+        if (leaf_of(key.path) == name) return "; did you mean '" + std::string(key.path) + "'?";
+    std::string hint = section.empty() ? "; top-level keys: " : "; keys in " + std::string(section) + ": ";
+    for (std::size_t i = 0; i < siblings.size(); ++i) hint += (i ? ", " : "") + siblings[i];
+    return hint;
+}
+
+std::string describe(const YAML::Node& n) {
+    switch (n.Type()) {
+        case YAML::NodeType::Scalar:
+            return "'" + n.Scalar() + "'";
+        case YAML::NodeType::Sequence:
+            return "a list";
+        case YAML::NodeType::Map:
+            return "a mapping";
+        default:
+            return "nothing (empty value)";
+    }
+}
+
+std::string range_text(const CaseKey& k, bool in_sentence) {
+    std::string r;
+    if (k.min && k.max)
+        r = std::string(in_sentence ? "in " : "") + (k.min->inclusive ? "[" : "(") + fmt(k.min->value) +
+            ", " + fmt(k.max->value) + (k.max->inclusive ? "]" : ")");
+    else if (k.min)
+        r = (k.min->inclusive ? ">= " : "> ") + fmt(k.min->value);
+    else if (k.max)
+        r = (k.max->inclusive ? "<= " : "< ") + fmt(k.max->value);
+    if (k.also) r = fmt(*k.also) + " or " + r;
+    return r;
+}
+
+template <class E>
+E to_enum(std::string_view path, const std::string& value,
+          std::initializer_list<std::pair<std::string_view, E>> table) {
+    for (const auto& [name, e] : table)
+        if (name == value) return e;
+    throw std::logic_error("case_file: choice '" + value + "' of " + std::string(path) +
+                           " has no enum value");
+}
+
+YAML::Node load_yaml(const std::string& text, const std::string& file) {
+    try {
+        return YAML::Load(text);
+    } catch (const YAML::Exception& e) {
+        std::string where = file.empty() ? "" : file + ", ";
+        if (!e.mark.is_null())
+            where +=
+                "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1);
+        throw CaseError(where + ": YAML syntax error: " + e.msg);
+    }
+}
+
+// ---- the reader ------------------------------------------------------------------------------------
+
+class Reader {
+  public:
+    Reader(std::string file, std::string default_name)
+        : file_(std::move(file)), default_name_(std::move(default_name)) {}
+
+    void add_document(const YAML::Node& root) {
+        if (!root.IsDefined() || root.IsNull()) return;  // an empty file: the required keys are missing
+        if (!root.IsMap())
+            fail("", "a case is a mapping of keys (key: value lines), got " + describe(root), &root);
+        flatten(root, "");
+    }
+
+    void add_override(const std::string& text) {
+        const std::string where = "--set " + text;
+        const std::size_t eq = text.find('=');
+        if (eq == std::string::npos) throw CaseError(where + ": expected key.path=value");
+        const std::string path = trim(text.substr(0, eq));
+        if (path.empty()) throw CaseError(where + ": no key path before '='");
+        // Every step of the path must be a known key, and all but the last a section.
+        const auto steps = split(path);
+        std::string prefix;
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            prefix = join(prefix, steps[i]);
+            const CaseKey* key = find_key(prefix);
+            if (!key) throw CaseError(where + ": " + prefix + ": unknown key" + unknown_key_hint(prefix));
+            if (i + 1 < steps.size() && key->type != KeyType::section)
+                throw CaseError(where + ": " + prefix + ": takes a value, it has no sub-keys");
+            if (i + 1 < steps.size() && !entries_.contains(prefix))
+                entries_[prefix] = {YAML::Node(YAML::NodeType::Null), YAML::Mark::null_mark(), text};
+        }
+        YAML::Node value;
+        try {
+            value = YAML::Load(text.substr(eq + 1));
+        } catch (const YAML::Exception& e) {
+            throw CaseError(where + ": " + path + ": YAML syntax error in the value: " + e.msg);
+        }
+        // The new value replaces the old one and everything under it.
+        std::erase_if(entries_, [&](const auto& entry) {
+            return entry.first == path || entry.first.starts_with(path + ".");
+        });
+        entries_[path] = {value, YAML::Mark::null_mark(), text};
+        if (find_key(path)->type == KeyType::section) flatten_section(value, path);
+    }
+
+    CaseConfig build() const {
+        check_presence();
+        CaseConfig c;
+
+        c.name = present("name") ? string("name") : default_name_;
+        if (c.name.empty()) fail("name", "must not be empty");
+        if (c.name.find_first_of("/\\") != std::string::npos)
+            fail("name",
+                 "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
+
+        read_axis("domain.x", c.x);
+        read_axis("domain.y", c.y);
+        c.depth = number("domain.depth");
+
+        c.density = number("fluid.density");
+        c.viscosity = number("fluid.viscosity");
+        c.body_force = vector2("fluid.body_force");
+
+        c.initial = to_enum<InitialCondition>(
+            "initial.type", choice("initial.type"),
+            {{"uniform", InitialCondition::uniform}, {"taylor_green", InitialCondition::taylor_green}});
+        c.initial_velocity = vector2("initial.velocity");
+        c.taylor_green_amplitude = number("initial.amplitude");
+
+        for (int s = 0; s < 4; ++s) read_boundary(s, c.boundary[s]);
+        check_boundaries(c);
+
+        c.convection = to_enum<ConvectionScheme>("numerics.convection", choice("numerics.convection"),
+                                                 {{"central", ConvectionScheme::central},
+                                                  {"van_leer", ConvectionScheme::van_leer},
+                                                  {"koren", ConvectionScheme::koren}});
+        c.cfl = number("numerics.cfl");
+        c.diffusion_number = number("numerics.diffusion_number");
+        c.fixed_dt = number_or_auto("numerics.dt");
+        c.max_dt = number("numerics.max_dt");
+        if (c.fixed_dt && *c.fixed_dt > c.max_dt)
+            fail("numerics.dt",
+                 "must not exceed numerics.max_dt (" + fmt(c.max_dt) + "), got " + fmt(*c.fixed_dt));
+        c.poisson_tolerance = number("numerics.poisson.tolerance");
+        c.poisson_max_iterations = static_cast<int>(integer("numerics.poisson.max_iterations"));
+        c.divergence_limit = number("numerics.divergence_limit");
+
+        c.end_time = number("time.end");
+        c.max_steps = integer("time.max_steps");
+
+        c.ranks = integer_vector2("parallel.ranks");
+
+        c.field_interval = number("output.fields_interval");
+        c.checkpoint_interval = number("output.checkpoint_interval");
+        c.checkpoints_kept = static_cast<int>(integer("output.checkpoints_kept"));
+        c.timeseries_every = static_cast<int>(integer("output.timeseries_every"));
+        c.progress_interval = number("output.progress_interval");
+        c.probes = point_list("output.probes");
+        for (std::size_t i = 0; i < c.probes.size(); ++i) {
+            const auto [px, py] = c.probes[i];
+            if (px < c.x.start || px > c.x.end || py < c.y.start || py > c.y.end)
+                fail(indexed("output.probes", i),
+                     "point [" + fmt(px) + ", " + fmt(py) + "] lies outside the domain [" + fmt(c.x.start) +
+                         ", " + fmt(c.x.end) + "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]");
+        }
+        c.plots = boolean("output.plots");
+        return c;
+    }
+
+  private:
+    struct Entry {
+        YAML::Node node;
+        YAML::Mark key_mark;  // where the key itself is written (null: made by a --set)
+        std::string origin;   // the --set that gave it; empty: the file
+    };
+
+    static std::string trim(const std::string& s) {
+        const std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
+        return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
+    }
+
+    void flatten(const YAML::Node& map, const std::string& section) {
+        for (const auto& item : map) {
+            const YAML::Node& key = item.first;
+            if (!key.IsScalar()) fail(section, "keys must be plain names, got " + describe(key), &key);
+            const std::string path = join(section, key.Scalar());
+            if (!find_key(path)) fail(path, "unknown key" + unknown_key_hint(path), &key);
+            if (const auto old = entries_.find(path); old != entries_.end()) {
+                const YAML::Mark m = old->second.key_mark;
+                fail(path,
+                     "given twice" +
+                         (m.is_null() ? "" : " (first on line " + std::to_string(m.line + 1) + ")"),
+                     &key);
+            }
+            const std::string origin = origin_of(section);
+            entries_[path] = {item.second, key.Mark(), origin};
+            if (find_key(path)->type == KeyType::section) flatten_section(item.second, path);
+        }
+    }
+
+    void flatten_section(const YAML::Node& value, const std::string& path) {
+        if (value.IsMap())
+            flatten(value, path);
+        else if (!value.IsNull())
+            fail(path, "expected a mapping of keys (key: value), got " + describe(value), &value);
+    }
+
+    std::string origin_of(std::string_view section) const {
+        const auto it = entries_.find(section);
+        return it == entries_.end() ? std::string{} : it->second.origin;
+    }
+
+    // The entry at `path` or, if that is absent, at its nearest ancestor.
+    const Entry* nearest_entry(std::string_view path) const {
+        std::string_view p = path.substr(0, path.find('['));
+        for (; !p.empty(); p = parent_of(p))
+            if (const auto it = entries_.find(p); it != entries_.end()) return &it->second;
+        return nullptr;
+    }
+
+    // "file, line N", or "--set key=value", for an error about `path`: the line of its value `node` if
+    // given, else of the key itself or, for a missing key, of its section's key.
+    std::string where(std::string_view path, const YAML::Node* node) const {
+        const Entry* e = nearest_entry(path);
+        if (e && !e->origin.empty()) return "--set " + e->origin;
+        YAML::Mark mark = YAML::Mark::null_mark();
+        if (node && node->IsDefined())
+            mark = node->Mark();
+        else if (e)
+            mark = e->key_mark;
+        std::string s = file_;
+        if (!mark.is_null())
+            s += (s.empty() ? "" : ", ") + std::string("line ") + std::to_string(mark.line + 1);
+        return s;
+    }
+
+    [[noreturn]] void fail(std::string_view path, const std::string& reason,
+                           const YAML::Node* node = nullptr) const {
+        const std::string w = where(path, node);
+        throw CaseError((w.empty() ? "" : w + ": ") + (path.empty() ? "" : std::string(path) + ": ") +
+                        reason);
+    }
+
+    bool present(std::string_view path) const { return entries_.contains(path); }
+
+    // Every concrete section present that matches a schema section pattern ("" is the top level).
+    std::vector<std::string> instances(std::string_view pattern) const {
+        if (pattern.empty()) return {""};
+        std::vector<std::string> found;
+        for (const auto& [path, entry] : entries_)
+            if (matches(pattern, path)) found.push_back(path);
+        return found;
+    }
+
+    void check_presence() const {
+        for (const CaseKey& k : case_schema()) {
+            for (const std::string& section : instances(parent_of(k.path))) {
+                for (std::string_view name : expand(leaf_of(k.path))) {
+                    const std::string path = join(section, name);
+                    std::string condition;  // the value of the `when` key, if the key does not apply
+                    bool applies = true;
+                    if (!k.when_key.empty()) {
+                        condition = choice(join(section, k.when_key));
+                        applies = std::find(k.when_values.begin(), k.when_values.end(), condition) !=
+                                  k.when_values.end();
+                    }
+                    if (present(path) && !applies)
+                        fail(path, "not used when " + std::string(k.when_key) + " is '" + condition +
+                                       "' (only with " + std::string(k.when_key) + ": " +
+                                       list(k.when_values, " or ") + ")");
+                    if (!present(path) && applies && k.required)
+                        fail(path,
+                             "missing required key (" +
+                                 (k.type == KeyType::choice ? "one of " + list(k.choices) : gist(k.meaning)) +
+                                 (k.when_key.empty() ? ""
+                                                     : "; needed when " + std::string(k.when_key) + " is '" +
+                                                           condition + "'") +
+                                 ")");
+                }
+            }
+        }
+    }
+
+    // ---- typed reads: the value given, or the schema's default; checked against the schema ----
+
+    const CaseKey& key(std::string_view path, KeyType type) const {
+        const CaseKey* k = find_key(path);
+        if (!k || k->type != type)
+            throw std::logic_error("case_file: no schema key '" + std::string(path) + "' of the type read");
+        return *k;
+    }
+
+    YAML::Node node(std::string_view path, const CaseKey& k) const {
+        if (const auto it = entries_.find(path); it != entries_.end()) return it->second.node;
+        if (k.default_value.empty())
+            throw std::logic_error("case_file: '" + std::string(path) +
+                                   "' read with no value and no default");
+        return YAML::Load(std::string(k.default_value));
+    }
+
+    void check_range(std::string_view path, const YAML::Node& n, double v, const CaseKey& k) const {
+        const bool above_min = !k.min || (k.min->inclusive ? v >= k.min->value : v > k.min->value);
+        const bool below_max = !k.max || (k.max->inclusive ? v <= k.max->value : v < k.max->value);
+        if (!(above_min && below_max) && !(k.also && v == *k.also))
+            fail(path, "must be " + range_text(k, true) + ", got " + n.Scalar(), &n);
+    }
+
+    double to_number(std::string_view path, const YAML::Node& n, const CaseKey& k) const {
+        double v = 0.0;
+        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
+            fail(path, "expected a number, got " + describe(n), &n);
+        if (!std::isfinite(v)) fail(path, "expected a finite number, got " + describe(n), &n);
+        check_range(path, n, v, k);
+        return v;
+    }
+
+    long to_integer(std::string_view path, const YAML::Node& n, const CaseKey& k) const {
+        double v = 0.0;
+        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v) || std::floor(v) != v)
+            fail(path, "expected an integer, got " + describe(n), &n);
+        check_range(path, n, v, k);
+        if (std::abs(v) > INT_MAX)
+            fail(path, "is too large (at most " + std::to_string(INT_MAX) + "), got " + n.Scalar(), &n);
+        return static_cast<long>(v);
+    }
+
+    // A list of exactly 2 items (`what`, e.g. "2 numbers like [1, 0]"), each read by `item`.
+    template <class T, class Item>
+    std::array<T, 2> read_pair(std::string_view path, const YAML::Node& n, const std::string& what,
+                               Item item) const {
+        if (!n.IsSequence()) fail(path, "expected " + what + ", got " + describe(n), &n);
+        if (n.size() != 2)
+            fail(path,
+                 "expected " + what.substr(0, what.find(" like")) + ", got " + std::to_string(n.size()) +
+                     (n.size() == 1 ? " item" : " items"),
+                 &n);
+        std::array<T, 2> v{};
+        std::size_t i = 0;
+        for (const auto& element : n) v[i] = item(indexed(path, i), element), ++i;
+        return v;
+    }
+
+    double number(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::number);
+        return to_number(path, node(path, k), k);
+    }
+
+    long integer(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::integer);
+        return to_integer(path, node(path, k), k);
+    }
+
+    bool boolean(std::string_view path) const {
+        const YAML::Node n = node(path, key(path, KeyType::boolean));
+        bool v = false;
+        if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v))
+            fail(path, "expected true or false, got " + describe(n), &n);
+        return v;
+    }
+
+    std::string string(std::string_view path) const {
+        const YAML::Node n = node(path, key(path, KeyType::string));
+        if (!n.IsScalar()) fail(path, "expected a text, got " + describe(n), &n);
+        return n.Scalar();
+    }
+
+    std::string choice(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::choice);
+        const YAML::Node n = node(path, k);
+        if (!n.IsScalar()) fail(path, "expected one of " + list(k.choices) + ", got " + describe(n), &n);
+        const std::string& v = n.Scalar();
+        if (std::find(k.choices.begin(), k.choices.end(), v) != k.choices.end()) return v;
+        std::string reason = "invalid choice '" + v + "'; choices: " + list(k.choices);
+        if (auto best = nearest(v, std::vector<std::string>(k.choices.begin(), k.choices.end())))
+            reason += " (did you mean '" + *best + "'?)";
+        fail(path, reason, &n);
+    }
+
+    std::array<double, 2> vector2(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::vector2);
+        return read_pair<double>(
+            path, node(path, k), "a list of 2 numbers like [1, 0]",
+            [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); });
+    }
+
+    std::array<int, 2> integer_vector2(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::integer_vector2);
+        return read_pair<int>(
+            path, node(path, k), "a list of 2 integers like [2, 1]",
+            [&](const std::string& p, const YAML::Node& e) { return static_cast<int>(to_integer(p, e, k)); });
+    }
+
+    std::vector<double> number_list(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::number_list);
+        const YAML::Node n = node(path, k);
+        if (!n.IsSequence())
+            fail(path, "expected a list of numbers like [0, 0.5, 1], got " + describe(n), &n);
+        std::vector<double> v;
+        for (const auto& element : n) v.push_back(to_number(indexed(path, v.size()), element, k));
+        return v;
+    }
+
+    std::vector<std::array<double, 2>> point_list(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::point_list);
+        const YAML::Node n = node(path, k);
+        if (!n.IsSequence())
+            fail(path, "expected a list of points like [[0.5, 0.5]], got " + describe(n), &n);
+        std::vector<std::array<double, 2>> v;
+        for (const auto& element : n)
+            v.push_back(read_pair<double>(
+                indexed(path, v.size()), element, "a point [x, y] like [0.5, 0.5]",
+                [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); }));
+        return v;
+    }
+
+    std::optional<double> number_or_auto(std::string_view path) const {
+        const CaseKey& k = key(path, KeyType::number_or_auto);
+        const YAML::Node n = node(path, k);
+        double v = 0.0;
+        if (n.IsScalar() && n.Scalar() == "auto") return std::nullopt;
+        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
+            fail(path, "expected auto or a number, got " + describe(n), &n);
+        check_range(path, n, v, k);
+        return v;
+    }
+
+    // ---- sections read as a whole, and the checks across keys ----
+
+    void read_axis(const std::string& p, AxisConfig& a) const {
+        a.spacing = choice(p + ".spacing");
+        a.beta = number(p + ".beta");
+        a.ratio = number(p + ".ratio");
+        if (a.spacing == "lines") {
+            a.lines = number_list(p + ".lines");
+            if (a.lines.size() < 3)
+                fail(p + ".lines",
+                     "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
+            for (std::size_t i = 1; i < a.lines.size(); ++i)
+                if (!(a.lines[i] > a.lines[i - 1]))
+                    fail(indexed(p + ".lines", i), "lines must be strictly increasing, got " +
+                                                       fmt(a.lines[i]) + " after " + fmt(a.lines[i - 1]));
+            a.start = a.lines.front();
+            a.end = a.lines.back();
+            a.cells = static_cast<int>(a.lines.size()) - 1;
+        } else {
+            a.start = number(p + ".start");
+            a.end = number(p + ".end");
+            if (!(a.end > a.start))
+                fail(p + ".end",
+                     "must be greater than " + p + ".start (" + fmt(a.start) + "), got " + fmt(a.end));
+            a.cells = static_cast<int>(integer(p + ".cells"));
+        }
+    }
+
+    void read_boundary(int s, BoundaryConfig& b) const {
+        const std::string side(kSideNames[s]), p = "boundaries." + side;
+        b.type = to_enum<BoundaryType>(p + ".type", choice(p + ".type"),
+                                       {{"wall", BoundaryType::wall},
+                                        {"slip", BoundaryType::slip},
+                                        {"inflow", BoundaryType::inflow},
+                                        {"outflow", BoundaryType::outflow},
+                                        {"periodic", BoundaryType::periodic}});
+        b.velocity = vector2(p + ".velocity");
+        b.profile = to_enum<InflowProfile>(
+            p + ".profile", choice(p + ".profile"),
+            {{"uniform", InflowProfile::uniform}, {"parabolic", InflowProfile::parabolic}});
+        b.outflow = to_enum<OutflowKind>(
+            p + ".kind", choice(p + ".kind"),
+            {{"convective", OutflowKind::convective}, {"zero_stress", OutflowKind::zero_stress}});
+        if (present(p + ".peak")) b.peak = number(p + ".peak");
+        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::parabolic &&
+            present(p + ".velocity"))
+            fail(p + ".velocity", "not used with profile: parabolic (the peak sets the inflow)");
+
+        const int normal = s < 2 ? 0 : 1;               // velocity component normal to this side
+        const double inward = s % 2 == 0 ? 1.0 : -1.0;  // sign of that component for flow into the domain
+        const std::string component = "velocity[" + std::to_string(normal) + "]";
+        if (b.type == BoundaryType::wall && b.velocity[normal] != 0.0)
+            fail(p + ".velocity", "a wall moves along itself: the normal component " + component +
+                                      " must be 0 on the " + side + " side, got " + fmt(b.velocity[normal]));
+        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::uniform) {
+            if (!present(p + ".velocity"))
+                fail(p + ".velocity",
+                     "missing required key (an inflow with profile: uniform needs its velocity; or "
+                     "use profile: parabolic with a peak)");
+            if (!(inward * b.velocity[normal] > 0.0))
+                fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " +
+                                          component + " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
+                                          fmt(b.velocity[normal]));
+        }
+    }
+
+    void check_boundaries(const CaseConfig& c) const {
+        const auto type_of = [&](int s) { return c.boundary[s].type; };
+        for (int s = 0; s < 4; ++s) {
+            const int opposite = s ^ 1;  // left <-> right, bottom <-> top
+            if (type_of(s) == BoundaryType::periodic && type_of(opposite) != BoundaryType::periodic)
+                fail("boundaries." + std::string(kSideNames[s]) + ".type",
+                     "periodic sides come in pairs: boundaries." + std::string(kSideNames[opposite]) +
+                         ".type must be periodic too, got '" +
+                         choice("boundaries." + std::string(kSideNames[opposite]) + ".type") + "'");
+        }
+        bool outflow = false;
+        for (int s = 0; s < 4; ++s) outflow = outflow || type_of(s) == BoundaryType::outflow;
+        for (int s = 0; s < 4; ++s)
+            if (type_of(s) == BoundaryType::inflow && !outflow)
+                fail("boundaries." + std::string(kSideNames[s]) + ".type",
+                     "an inflow needs an outflow side somewhere: with none, the mass let in cannot leave");
+    }
+
+    std::string file_, default_name_;
+    std::map<std::string, Entry, std::less<>> entries_;  // full key path -> value, as given
+};
+
+}  // namespace
+
+const std::vector<CaseKey>& case_schema() {
+    static const std::vector<CaseKey> schema = make_schema();
+    return schema;
+}
+
+CaseConfig parse_case(const YAML::Node& root) {
+    Reader reader("", "case");
+    reader.add_document(root);
+    return reader.build();
+}
+
+CaseConfig parse_case_text(const std::string& yaml_text, const std::vector<std::string>& overrides) {
+    Reader reader("", "case");
+    reader.add_document(load_yaml(yaml_text, ""));
+    for (const std::string& o : overrides) reader.add_override(o);
+    return reader.build();
+}
+
+CaseConfig load_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw CaseError(name + ": case file not found");
+    if (std::filesystem::is_directory(file, ec)) throw CaseError(name + ": is a directory, not a case file");
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in) throw CaseError(name + ": cannot read the case file");
+    Reader reader(name, file.stem().string());
+    reader.add_document(load_yaml(text.str(), name));
+    for (const std::string& o : overrides) reader.add_override(o);
+    return reader.build();
+}
+
+std::string schema_markdown() {
+    const auto cell = [](std::string_view text) {
+        std::string s;
+        for (char ch : text) s += ch == '|' ? std::string("\\|") : std::string(1, ch);
+        return s;
+    };
+    const auto code = [](std::string_view text) { return "`" + std::string(text) + "`"; };
+    std::string md =
+        "| Key | Type | Default | Allowed | Units | Meaning |\n"
+        "|-----|------|---------|---------|-------|---------|\n";
+    for (const CaseKey& k : case_schema()) {
+        std::string type, allowed = range_text(k, false), fallback;
+        switch (k.type) {
+            case KeyType::section:
+                type = "section";
+                break;
+            case KeyType::string:
+                type = "text";
+                break;
+            case KeyType::number:
+                type = "number";
+                break;
+            case KeyType::integer:
+                type = "integer";
+                break;
+            case KeyType::boolean:
+                type = "true/false";
+                break;
+            case KeyType::choice:
+                type = "choice";
+                break;
+            case KeyType::vector2:
+                type = "[number, number]";
+                break;
+            case KeyType::integer_vector2:
+                type = "[integer, integer]";
+                break;
+            case KeyType::number_list:
+                type = "list of numbers";
+                break;
+            case KeyType::point_list:
+                type = "list of [x, y]";
+                break;
+            case KeyType::number_or_auto:
+                type = "`auto` or number";
+                break;
+        }
+        if (k.type == KeyType::choice) {
+            for (std::string_view c : k.choices) allowed += (allowed.empty() ? "" : ", ") + code(c);
+        }
+        if ((k.type == KeyType::vector2 || k.type == KeyType::integer_vector2) && !allowed.empty())
+            allowed = "each " + allowed;
+        if (k.type == KeyType::number_or_auto) allowed = code("auto") + " or " + allowed;
+
+        std::string dflt;
+        if (k.required)
+            dflt = "**required**";
+        else if (!k.default_doc.empty())
+            dflt = std::string(k.default_doc);
+        else if (!k.default_value.empty())
+            dflt = code(k.default_value);
+
+        std::string meaning(k.meaning);
+        if (!k.when_key.empty()) {
+            // "Only with `spacing: tanh`." or "Only with `spacing: uniform`, `tanh` or `geometric`."
+            const auto& values = k.when_values;
+            std::string options = code(std::string(k.when_key) + ": " + std::string(values.front()));
+            for (std::size_t i = 1; i < values.size(); ++i)
+                options += (i + 1 == values.size() ? " or " : ", ") + code(values[i]);
+            meaning += " Only with " + options + ".";
+        }
+        md += "| " + code(k.path) + " | " + cell(type) + " | " + cell(dflt) + " | " + cell(allowed) + " | " +
+              cell(k.units) + " | " + cell(meaning) + " |\n";
+    }
+    return md;
+}
+
+}  // namespace chute

@@ -1,0 +1,50 @@
+#pragma once
+// A whole run: the time loop around FlowSolver, with its outputs, stop tests and progress report.
+//
+//   while t < end:  dt -> advance (predict, project) -> check (NaN, divergence)
+//                   -> time series -> fields, checkpoint at their intervals -> progress line
+//   final fields, checkpoint, time-series HDF5, timing summary
+// Everything written is written atomically, so a run that aborts (divergence, bad input, Ctrl-C) keeps
+// all it wrote before.
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "case_config.hpp"
+#include "flow_solver.hpp"
+
+namespace chute {
+
+// The run left the stable regime: NaN/Inf in the fields or a divergence above numerics.divergence_limit.
+class RunDiverged : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct RunOptions {
+    std::filesystem::path out_dir = "results";
+    std::optional<std::filesystem::path> restart;  // checkpoint to continue from
+    std::string case_yaml;                          // the case as run, saved as out_dir/case.yaml
+    bool quiet = false;                             // no progress lines (tests)
+};
+
+struct RunSummary {
+    long steps = 0;             // steps taken in this run (after a restart: since the restart)
+    double time = 0.0;          // final simulated time
+    double wall_seconds = 0.0;  // time loop only
+    double seconds_per_step_mean = 0.0, seconds_per_step_min = 0.0, seconds_per_step_max = 0.0;
+    double share_poisson = 0.0, share_momentum = 0.0, share_correction = 0.0, share_output = 0.0;
+    double mean_poisson_iterations = 0.0;
+    double cell_steps_per_second = 0.0;
+    double kinetic_energy = 0.0, max_divergence = 0.0;
+    std::filesystem::path last_checkpoint;
+};
+
+// Runs the case on `comm`; throws RunDiverged, CaseError-like std::runtime_error for bad restarts.
+RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, MPI_Comm comm);
+
+// Human-readable timing summary (printed at the end of a run).
+std::string format_summary(const RunSummary& s, long long cells);
+
+}  // namespace chute

@@ -1,0 +1,19 @@
+# Validation tests: real runs compared with published values (label "validation"); the long ones also
+# carry the label "slow" and are left out of CI (run them with `ctest -L slow`).
+add_executable(chute_validation_tests
+  ${CMAKE_CURRENT_LIST_DIR}/test_lid_driven_cavity.cpp
+  $<TARGET_OBJECTS:chute_gtest_main>)
+target_link_libraries(chute_validation_tests PRIVATE chute_core GTest::gtest)
+target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+# Runs a validation test on `ranks` MPI ranks.
+function(chute_validation name filter ranks labels)
+  add_test(NAME ${name}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ranks} --allow-run-as-root --oversubscribe
+                   $<TARGET_FILE:chute_validation_tests> --gtest_filter=${filter})
+  set_tests_properties(${name} PROPERTIES LABELS "${labels}" PROCESSORS ${ranks})
+endfunction()
+
+chute_validation(cavity_re100_64 Cavity.Re100Grid64 2 "validation")
+chute_validation(cavity_re1000_128 Cavity.Re1000Grid128 2 "validation")
+chute_validation(cavity_re100_128 Cavity.Re100Grid128 2 "validation;slow")
