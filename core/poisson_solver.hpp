@@ -7,8 +7,9 @@
 // Multiplied by -1 the matrix is symmetric positive (semi-)definite and solved with PCG preconditioned by
 // one PFMG V-cycle. Boundaries: Neumann (no flux) everywhere, except p = 0 on zero-stress outflows
 // (ghost p = -p_ij, d_f = w). With Neumann on all sides the matrix is singular: the right-hand side is
-// made zero-mean and the solution's mean is removed (keeping the matrix as it is; see STACK.md: pinning a
-// cell slows PFMG five-fold).
+// made zero-mean, the preconditioner's output is projected onto zero-mean vectors (without this PCG
+// breaks down on stretched grids: PFMG does not keep the null space out), and the solution's mean is
+// removed. The matrix is kept as it is (STACK.md: pinning a cell slows PFMG five-fold).
 #include <HYPRE_struct_ls.h>
 
 #include <array>
@@ -50,6 +51,7 @@ private:
     HYPRE_StructMatrix matrix_ = nullptr;
     HYPRE_StructVector b_ = nullptr, x_ = nullptr;
     HYPRE_StructSolver pcg_ = nullptr, pfmg_ = nullptr;
+    HYPRE_StructVector ones_ = nullptr;  // the null space of the all-Neumann matrix
     std::vector<double> buffer_;
     std::array<int, 2> lower_{}, upper_{};
 };

@@ -83,7 +83,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     }
 
     TimeSeries series(grid, options.out_dir, timeseries_columns(config), options.restart ? solver.time() : -1.0);
-    FieldOutput fields(grid, options.out_dir);
+    FieldOutput fields(grid, options.out_dir, options.restart ? solver.step() : -1);
     Probes probes(grid, config.probes);
     HaloExchange halo(grid);
     Field2D uc(grid), vc(grid), omega(grid), pressure_pa(grid);

@@ -1,0 +1,361 @@
+// bench_step: cost of one time step of the flow solver, and of a bare Poisson solve, per cell.
+//
+//   mpirun -np R bench_step [options] [N ...]        (default N: 256 512 1024)
+//
+// Case: the lid-driven cavity at Re = 1000 (unit square, walls, lid [1, 0], nu = 1e-3, central
+// convection, CFL 0.5, Poisson tolerance 1e-8) on an N x N uniform grid. For each N: `--warmup` steps
+// (default 50), then at least `--min-steps` steps (default 20) and `--min-seconds` of wall time
+// (default 2 s) are timed. The step is FlowSolver::advance() alone (the run loop's per-step diagnostics,
+// kinetic energy and max |div u|, are timed separately). Then a Poisson solve from a zero guess to 1e-8
+// (PoissonSolver on the same grid, all-Neumann like the projection, random zero-mean right-hand side) is
+// timed, best of `--poisson-repeats` (default 3), for comparison with STACK.md.
+// `--kernels` adds a table of the step's parts timed one by one (convection, diffusion, ...).
+// Rank 0 prints Markdown tables.
+#include <HYPRE_utilities.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "boundary_conditions.hpp"
+#include "convection.hpp"
+#include "diagnostics.hpp"
+#include "diffusion.hpp"
+#include "flow_solver.hpp"
+#include "halo_exchange.hpp"
+#include "poisson_solver.hpp"
+#include "projection.hpp"
+#include "time_step_control.hpp"
+
+using namespace chute;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Options {
+    std::vector<int> grids;
+    int warmup = 50;
+    int min_steps = 20;
+    double min_seconds = 2.0;
+    int poisson_repeats = 3;
+    bool kernels = false;
+};
+
+CaseConfig cavity_case(int n) {
+    CaseConfig c;
+    c.name = "cavity_re1000";
+    c.x = AxisConfig{0.0, 1.0, n, "uniform", 2.0, 1.05, {}};
+    c.y = c.x;
+    for (auto& b : c.boundary) b.type = BoundaryType::wall;
+    c.boundary[static_cast<int>(Side::top)].velocity = {1.0, 0.0};
+    c.viscosity = 1e-3;
+    c.convection = ConvectionScheme::central;
+    c.cfl = 0.5;
+    c.poisson_tolerance = 1e-8;
+    return c;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            const auto colon = line.find(':');
+            if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+        }
+    return "unknown";
+}
+
+int cpu_count() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    int n = 0;
+    while (std::getline(in, line))
+        if (line.rfind("processor", 0) == 0) ++n;
+    return n;
+}
+
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    double a = 0, b = 0, c = 0;
+    in >> a >> b >> c;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.2f %.2f %.2f", a, b, c);
+    return buf;
+}
+
+std::string today() {
+    const std::time_t t = std::time(nullptr);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", std::localtime(&t));
+    return buf;
+}
+
+struct StepRow {
+    int n = 0;
+    long steps = 0;
+    double seconds = 0, sec_momentum = 0, sec_poisson = 0, sec_correction = 0, sec_diagnostics = 0;
+    double min_step = 0, iterations = 0;
+};
+
+struct PoissonRow {
+    int n = 0;
+    double seconds = 0;
+    int iterations = 0;
+    double residual = 0;
+};
+
+struct KernelRow {
+    std::string name;
+    double seconds = 0;  // best of the repeats, one call
+};
+
+// Runs f `repeats` times (synchronised) and returns the best wall time of one call (max over ranks).
+double best_time(MPI_Comm comm, int repeats, const std::function<void()>& f) {
+    double best = INFINITY;
+    for (int r = 0; r < repeats; ++r) {
+        MPI_Barrier(comm);
+        const auto t0 = Clock::now();
+        f();
+        double t = since(t0);
+        MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_MAX, comm);
+        best = std::min(best, t);
+    }
+    return best;
+}
+
+std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
+    const Grid& g = s.grid();
+    const CaseConfig& c = s.config();
+    MPI_Comm comm = g.comm();
+    BoundaryConditions bc(g, c.boundary);
+    HaloExchange halo(g);
+    Velocity vel = s.velocity(), rhs(g), rhs_old = s.previous_rhs(), star(g);
+    Field2D p = s.pressure(), source(g);
+    const double dt = s.next_dt();
+    const int nx = g.nx(), ny = g.ny();
+    volatile double sink = 0.0;
+    std::vector<KernelRow> rows;
+    auto add = [&](const char* name, const std::function<void()>& f) { rows.push_back({name, best_time(comm, repeats, f)}); };
+
+    add("time_step_limits (next_dt)", [&] { sink = time_step_limits(g, vel, c.viscosity, c.cfl, c.diffusion_number).stable(); });
+    add("convection (central)", [&] { convection(g, c.convection, vel, bc.u_first(), bc.v_first(), rhs); });
+    add("add_diffusion", [&] { add_diffusion(g, c.viscosity, vel, bc.u_first(), bc.v_first(), rhs); });
+    add("AB2 update u*", [&] {
+        for (int j = 0; j < ny; ++j)
+            for (int i = bc.u_first(); i < nx; ++i)
+                star.u(i, j) = vel.u(i, j) + 1.5 * dt * rhs.u(i, j) - 0.5 * dt * rhs_old.u(i, j);
+        for (int j = bc.v_first(); j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+                star.v(i, j) = vel.v(i, j) + 1.5 * dt * rhs.v(i, j) - 0.5 * dt * rhs_old.v(i, j);
+    });
+    add("set_outflow + halo(u*)", [&] {
+        bc.set_outflow(vel, star, dt);
+        halo.exchange(star);
+    });
+    add("divergence", [&] { divergence(g, star, 1.0 / dt, source); });
+    add("residual-floor sum", [&] {
+        const auto& X = g.lx();
+        const auto& Y = g.ly();
+        double scale = 0.0;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const double rate = std::abs(star.u(i, j)) / X.w(i) + std::abs(star.v(i, j)) / Y.w(j);
+                const double b = X.w(i) * Y.w(j) * rate / dt;
+                scale += b * b;
+            }
+        MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_SUM, comm);
+        sink = scale;
+    });
+    add("halo(p) + apply_pressure", [&] {
+        halo.exchange(p);
+        bc.apply_pressure(p);
+    });
+    add("subtract_pressure_gradient", [&] { subtract_pressure_gradient(g, bc, p, dt, star); });
+    add("halo(u) + bc.apply", [&] {
+        halo.exchange(star);
+        bc.apply(star);
+    });
+    add("kinetic_energy (run loop)", [&] { sink = kinetic_energy(g, vel); });
+    add("max_divergence (run loop)", [&] { sink = max_divergence(g, vel); });
+    (void)sink;
+    return rows;
+}
+
+void usage() {
+    std::fprintf(stderr,
+                 "usage: bench_step [--warmup N] [--min-steps N] [--min-seconds S] [--poisson-repeats N] "
+                 "[--kernels] [GRID ...]\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    MPI_Init(&argc, &argv);
+    HYPRE_Init();
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    const bool root = rank == 0;
+
+    Options opt;
+    for (int a = 1; a < argc; ++a) {
+        const std::string arg = argv[a];
+        auto value = [&]() -> const char* {
+            if (a + 1 >= argc) {
+                if (root) usage();
+                MPI_Abort(MPI_COMM_WORLD, 2);
+            }
+            return argv[++a];
+        };
+        if (arg == "--warmup") opt.warmup = std::atoi(value());
+        else if (arg == "--min-steps") opt.min_steps = std::atoi(value());
+        else if (arg == "--min-seconds") opt.min_seconds = std::atof(value());
+        else if (arg == "--poisson-repeats") opt.poisson_repeats = std::atoi(value());
+        else if (arg == "--kernels") opt.kernels = true;
+        else if (arg == "-h" || arg == "--help") {
+            if (root) usage();
+            HYPRE_Finalize();
+            MPI_Finalize();
+            return 0;
+        } else if (const int n = std::atoi(arg.c_str()); n >= 8) opt.grids.push_back(n);
+        else {
+            if (root) usage();
+            MPI_Abort(MPI_COMM_WORLD, 2);
+        }
+    }
+    if (opt.grids.empty()) opt.grids = {256, 512, 1024};
+
+    if (root) {
+        std::printf("Machine: %s, %d cores; %s; load average at start %s\n\n", cpu_model().c_str(), cpu_count(),
+                    today().c_str(), load_average().c_str());
+        std::printf("Case: lid-driven cavity, Re 1000, central convection, CFL 0.5, Poisson tol 1e-8; %d warm-up "
+                    "steps, then >= %d steps and >= %.1f s timed.\n\n",
+                    opt.warmup, opt.min_steps, opt.min_seconds);
+        std::fflush(stdout);
+    }
+
+    std::vector<StepRow> steps;
+    std::vector<PoissonRow> poisson;
+    std::vector<std::pair<int, std::vector<KernelRow>>> kernels;
+    for (const int n : opt.grids) {
+        FlowSolver s(cavity_case(n), MPI_COMM_WORLD);
+        const Grid& g = s.grid();
+        for (int k = 0; k < opt.warmup; ++k) s.advance();
+
+        // Number of timed steps: from the last warm-up steps' speed (decided on rank 0, so all agree).
+        MPI_Barrier(MPI_COMM_WORLD);
+        auto t0 = Clock::now();
+        s.advance();
+        double probe = since(t0);
+        MPI_Bcast(&probe, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+        long count = std::max<long>(opt.min_steps, static_cast<long>(std::ceil(opt.min_seconds / probe)));
+
+        StepRow row;
+        row.n = n;
+        row.steps = count;
+        row.min_step = INFINITY;
+        double ke = 0, div = 0;
+        MPI_Barrier(MPI_COMM_WORLD);
+        for (long k = 0; k < count; ++k) {
+            t0 = Clock::now();
+            const StepStats st = s.advance();
+            const double t_step = since(t0);
+            const auto t1 = Clock::now();
+            ke += kinetic_energy(g, s.velocity());
+            div = std::max(div, max_divergence(g, s.velocity()));
+            row.sec_diagnostics += since(t1);
+            row.seconds += t_step;
+            row.min_step = std::min(row.min_step, t_step);
+            row.sec_momentum += st.seconds_momentum;
+            row.sec_poisson += st.seconds_poisson;
+            row.sec_correction += st.seconds_correction;
+            row.iterations += st.poisson_iterations;
+        }
+        if (!std::isfinite(ke) || !std::isfinite(div)) {
+            if (root) std::fprintf(stderr, "bench_step: the %d^2 run diverged\n", n);
+            MPI_Abort(MPI_COMM_WORLD, 3);
+        }
+        steps.push_back(row);
+
+        if (opt.kernels) kernels.emplace_back(n, time_kernels(s, 5));
+
+        // Bare Poisson solve from a zero guess, all-Neumann (the projection's problem).
+        PoissonSolver ps(g, {false, false, false, false}, 1e-8, 200);
+        Field2D source(g), p(g);
+        std::mt19937_64 rng(12345u + 7919u * static_cast<unsigned>(rank));
+        std::uniform_real_distribution<double> dist(-1.0, 1.0);
+        double sum = 0.0;
+        for (int j = 0; j < g.ny(); ++j)
+            for (int i = 0; i < g.nx(); ++i) sum += (source(i, j) = dist(rng));
+        MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        const double mean = sum / static_cast<double>(g.global_cells());
+        for (int j = 0; j < g.ny(); ++j)
+            for (int i = 0; i < g.nx(); ++i) source(i, j) -= mean;
+        PoissonRow prow;
+        prow.n = n;
+        PoissonStats pst;
+        prow.seconds = best_time(MPI_COMM_WORLD, opt.poisson_repeats, [&] {
+            p.fill(0.0);
+            pst = ps.solve(source, p);
+        });
+        prow.iterations = pst.iterations;
+        prow.residual = pst.relative_residual;
+        poisson.push_back(prow);
+    }
+
+    if (root) {
+        std::printf("### Time step, %d rank%s\n\n", size, size > 1 ? "s" : "");
+        std::printf("| ranks | grid | steps | us / cell-step | Poisson share | momentum share | correction share | "
+                    "Poisson it. (mean) | cell-steps / s | min step, ms | diagnostics, us / cell |\n");
+        std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+        for (const auto& r : steps) {
+            const double cells = static_cast<double>(r.n) * r.n;
+            const double per_step = r.seconds / r.steps;
+            std::printf("| %d | %d^2 | %ld | %.3f | %.0f %% | %.0f %% | %.0f %% | %.1f | %.3g | %.1f | %.3f |\n", size,
+                        r.n, r.steps, 1e6 * per_step / cells, 100 * r.sec_poisson / r.seconds,
+                        100 * r.sec_momentum / r.seconds, 100 * r.sec_correction / r.seconds,
+                        r.iterations / r.steps, cells / per_step, 1e3 * r.min_step,
+                        1e6 * r.sec_diagnostics / r.steps / cells);
+        }
+        std::printf("\n### Poisson solve alone (zero guess, tolerance 1e-8, all-Neumann, random zero-mean "
+                    "right-hand side, best of %d), %d rank%s\n\n",
+                    opt.poisson_repeats, size, size > 1 ? "s" : "");
+        std::printf("| ranks | grid | iterations | solve, s | us / unknown | us / unknown / iteration |\n");
+        std::printf("|---|---|---|---|---|---|\n");
+        for (const auto& r : poisson) {
+            const double cells = static_cast<double>(r.n) * r.n;
+            std::printf("| %d | %d^2 | %d | %.4f | %.3f | %.4f |\n", size, r.n, r.iterations, r.seconds,
+                        1e6 * r.seconds / cells, 1e6 * r.seconds / cells / std::max(1, r.iterations));
+        }
+        for (const auto& [n, rows] : kernels) {
+            const double cells = static_cast<double>(n) * n;
+            std::printf("\n### Parts of the step timed one by one, %d^2, %d rank%s (best of 5)\n\n", n, size,
+                        size > 1 ? "s" : "");
+            std::printf("| part | us / cell |\n|---|---|\n");
+            double total = 0.0;
+            for (const auto& k : rows) {
+                std::printf("| %s | %.4f |\n", k.name.c_str(), 1e6 * k.seconds / cells);
+                total += k.seconds;
+            }
+            std::printf("| sum (without the Poisson solve) | %.4f |\n", 1e6 * total / cells);
+        }
+        std::printf("\nLoad average at end: %s\n", load_average().c_str());
+        std::fflush(stdout);
+    }
+
+    HYPRE_Finalize();
+    MPI_Finalize();
+    return 0;
+}

@@ -1,0 +1,135 @@
+// The same case on 1 and on 2 MPI ranks gives the same fields to within the linear-solver tolerance.
+// Run under `mpirun -np 2` (ctest entry parallel_np2); on one rank the tests are skipped. Rank 0 also
+// runs the case alone on MPI_COMM_SELF and compares the gathered fields.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flow_solver.hpp"
+#include "gather.hpp"
+
+using namespace chute;
+
+namespace {
+
+int world_size() {
+    int size = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return size;
+}
+
+// Max difference of u, v, p between the run on all ranks and the run on rank 0 alone, relative to the
+// max speed (for u, v) and to the max |p| (for p). Every rank gets the result.
+std::array<double, 2> compare_np(CaseConfig c, int steps, std::array<int, 2> ranks) {
+    c.ranks = ranks;
+    FlowSolver parallel(c, MPI_COMM_WORLD);
+    for (int k = 0; k < steps; ++k) parallel.advance();
+    const Grid& g = parallel.grid();
+    const auto u = gather_global(g, parallel.velocity().u, 1, 0);
+    const auto v = gather_global(g, parallel.velocity().v, 0, 1);
+    const auto p = gather_global(g, parallel.pressure());
+    std::array<double, 2> diff{0.0, 0.0};
+    if (g.rank() == 0) {
+        CaseConfig serial_case = c;
+        serial_case.ranks = {0, 0};
+        FlowSolver serial(serial_case, MPI_COMM_SELF);
+        for (int k = 0; k < steps; ++k) serial.advance();
+        const auto us = gather_global(serial.grid(), serial.velocity().u, 1, 0);
+        const auto vs = gather_global(serial.grid(), serial.velocity().v, 0, 1);
+        const auto ps = gather_global(serial.grid(), serial.pressure());
+        double umax = 0, pmax = 0, du = 0, dp = 0;
+        for (std::size_t k = 0; k < u.size(); ++k) umax = std::max(umax, std::abs(us[k])), du = std::max(du, std::abs(u[k] - us[k]));
+        for (std::size_t k = 0; k < v.size(); ++k) umax = std::max(umax, std::abs(vs[k])), du = std::max(du, std::abs(v[k] - vs[k]));
+        for (std::size_t k = 0; k < p.size(); ++k) pmax = std::max(pmax, std::abs(ps[k])), dp = std::max(dp, std::abs(p[k] - ps[k]));
+        diff = {du / umax, dp / pmax};
+        std::printf("np=%d (%dx%d patches) vs np=1 after %d steps: max |du|/|u|max = %.2e, max |dp|/|p|max = %.2e\n",
+                    g.size(), g.ranks()[0], g.ranks()[1], steps, diff[0], diff[1]);
+    }
+    MPI_Bcast(diff.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    return diff;
+}
+
+CaseConfig cavity() {
+    CaseConfig c;
+    c.x = AxisConfig{0.0, 1.0, 48, "tanh", 1.2, 1.05, {}};
+    c.y = AxisConfig{0.0, 1.0, 40, "uniform", 2.0, 1.05, {}};
+    for (auto& b : c.boundary) b.type = BoundaryType::wall;
+    c.boundary[3].velocity = {1.0, 0.0};
+    c.viscosity = 1e-3;
+    c.poisson_tolerance = 1e-10;
+    return c;
+}
+
+// Inflow (parabolic) on the left, zero-stress outflow on the right, walls top and bottom, a uniform
+// initial current that the projection must first make consistent with the walls: exercises the
+// Dirichlet pressure side and the corrected boundary faces.
+CaseConfig channel(OutflowKind outflow) {
+    CaseConfig c;
+    c.x = AxisConfig{0.0, 3.0, 60, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{0.0, 1.0, 24, "tanh", 1.5, 1.05, {}};
+    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 1.0, OutflowKind::convective};
+    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, outflow};
+    c.boundary[2].type = c.boundary[3].type = BoundaryType::wall;
+    c.initial_velocity = {0.5, 0.1};
+    c.viscosity = 1e-2;
+    c.convection = ConvectionScheme::van_leer;
+    c.poisson_tolerance = 1e-10;
+    return c;
+}
+
+// Periodic in x, slip walls in y, Taylor-Green start: exercises the periodic halo across ranks.
+CaseConfig periodic() {
+    CaseConfig c;
+    const double pi = 3.141592653589793;
+    c.x = AxisConfig{-pi, pi, 32, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{-pi, pi, 32, "uniform", 2.0, 1.05, {}};
+    for (auto& b : c.boundary) b.type = BoundaryType::periodic;
+    c.initial = InitialCondition::taylor_green;
+    c.viscosity = 1e-2;
+    c.convection = ConvectionScheme::koren;
+    c.poisson_tolerance = 1e-10;
+    return c;
+}
+
+// The linear solver stops at a relative residual of 1e-10; the difference between decompositions is
+// round-off amplified by at most the iteration count and the step count, so 1e-7 of the field's scale
+// is a bound the solver must meet (a halo or boundary bug gives O(1e-2) or worse).
+constexpr double kTolerance = 1e-7;
+
+}  // namespace
+
+TEST(Parallel, CavitySplitInX) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    const auto d = compare_np(cavity(), 200, {2, 1});
+    EXPECT_LT(d[0], kTolerance);
+    EXPECT_LT(d[1], kTolerance);
+}
+
+TEST(Parallel, CavitySplitInY) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    const auto d = compare_np(cavity(), 200, {1, 2});
+    EXPECT_LT(d[0], kTolerance);
+    EXPECT_LT(d[1], kTolerance);
+}
+
+TEST(Parallel, ChannelZeroStressOutflow) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    const auto d = compare_np(channel(OutflowKind::zero_stress), 200, {2, 1});
+    EXPECT_LT(d[0], kTolerance);
+    EXPECT_LT(d[1], kTolerance);
+}
+
+TEST(Parallel, ChannelConvectiveOutflowSplitInY) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    const auto d = compare_np(channel(OutflowKind::convective), 200, {1, 2});
+    EXPECT_LT(d[0], kTolerance);
+    EXPECT_LT(d[1], kTolerance);
+}
+
+TEST(Parallel, PeriodicKoren) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    const auto d1 = compare_np(periodic(), 100, {2, 1});
+    const auto d2 = compare_np(periodic(), 100, {1, 2});
+    EXPECT_LT(std::max(d1[0], d2[0]), kTolerance);
+    EXPECT_LT(std::max(d1[1], d2[1]), kTolerance);
+}
