@@ -16,4 +16,4 @@ endfunction()
 
 chute_validation(cavity_re100_64 Cavity.Re100Grid64 2 "validation")
 chute_validation(cavity_re1000_128 Cavity.Re1000Grid128 2 "validation")
-chute_validation(cavity_re100_128 Cavity.Re100Grid128 2 "validation;slow")
+chute_validation(cavity_re100_128 Cavity.Re100Grid128 2 "validation")

@@ -1,0 +1,216 @@
+// Whole runs: restart equals a straight run; bad input and diverging runs end with a clear message and
+// keep what was written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "case_file.hpp"
+#include "checkpoint.hpp"
+#include "hdf5_file.hpp"
+#include "simulation.hpp"
+
+using namespace chute;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    const fs::path dir = fs::temp_directory_path() / ("chute_test_" + name + "_np" + std::to_string(size));
+    if (rank == 0) {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    return dir;
+}
+
+// A channel with inflow, convective outflow, a stretched grid, van Leer convection and probes: every
+// piece of state a restart must carry (AB2 history, outflow faces, pressure) is exercised.
+const char* kChannel = R"(
+name: restart_channel
+domain:
+  x: {start: 0.0, end: 2.0, cells: 40}
+  y: {start: 0.0, end: 1.0, cells: 20, spacing: tanh, beta: 1.3}
+fluid: {viscosity: 0.005}
+initial: {velocity: [0.2, 0.05]}
+boundaries:
+  left: {type: inflow, profile: parabolic, peak: 1.0}
+  right: {type: outflow, kind: convective}
+  bottom: {type: wall}
+  top: {type: wall, velocity: [0.3, 0.0]}
+numerics: {convection: van_leer}
+time: {end: 2.0}
+output: {probes: [[1.0, 0.5]], checkpoint_interval: 0.5}
+)";
+
+std::vector<double> read_field(const fs::path& file, const std::string& name) {
+    auto f = Hdf5File::open_read(file);
+    return f.read("/fields/" + name);
+}
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+}  // namespace
+
+// A run stopped at step 40 and restarted from its checkpoint ends bit for bit where the straight run
+// ends (same fields, same time-series rows): every piece of state is in the checkpoint.
+TEST(Restart, StopAndRestartEqualsStraightRun) {
+    const fs::path straight_dir = scratch("straight"), split_dir = scratch("split");
+    RunOptions quiet;
+    quiet.quiet = true;
+
+    CaseConfig config = parse_case_text(kChannel);
+    RunOptions a = quiet;
+    a.out_dir = straight_dir;
+    const RunSummary straight = run_simulation(config, a, MPI_COMM_WORLD);
+
+    CaseConfig first_part = config;
+    first_part.max_steps = 40;
+    RunOptions b = quiet;
+    b.out_dir = split_dir;
+    const RunSummary stopped = run_simulation(first_part, b, MPI_COMM_WORLD);
+    ASSERT_EQ(stopped.steps, 40);
+    RunOptions c = quiet;
+    c.out_dir = split_dir;
+    c.restart = stopped.last_checkpoint;
+    const RunSummary resumed = run_simulation(config, c, MPI_COMM_WORLD);
+
+    EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
+    EXPECT_EQ(resumed.time, straight.time);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0) {
+        for (const char* name : {"u", "v", "p", "rhs_old_u", "rhs_old_v"}) {
+            const auto x = read_field(straight.last_checkpoint, name), y = read_field(resumed.last_checkpoint, name);
+            ASSERT_EQ(x.size(), y.size());
+            for (std::size_t k = 0; k < x.size(); ++k) ASSERT_EQ(x[k], y[k]) << name << "[" << k << "]";
+        }
+        EXPECT_EQ(read_text(straight_dir / "timeseries.csv"), read_text(split_dir / "timeseries.csv"));
+    }
+}
+
+// ---- The command-line tool: exit codes and messages -----------------------------------------------
+
+namespace {
+
+struct CommandResult {
+    int exit_code;
+    std::string output;
+};
+
+CommandResult run_chute(const std::string& args, const fs::path& dir) {
+    const fs::path log = dir / "chute.log";
+    const std::string cmd = std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1";
+    const int status = std::system(cmd.c_str());
+    return {WEXITSTATUS(status), read_text(log)};
+}
+
+void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+bool single_rank() {
+    int size = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return size == 1;
+}
+
+const char* kSmallCavity = R"(
+name: small_cavity
+domain:
+  x: {start: 0.0, end: 1.0, cells: 16}
+  y: {start: 0.0, end: 1.0, cells: 16}
+fluid: {viscosity: 0.01}
+boundaries:
+  left: {type: wall}
+  right: {type: wall}
+  bottom: {type: wall}
+  top: {type: wall, velocity: [1.0, 0.0]}
+time: {end: 0.2}
+output: {plots: false}
+)";
+
+}  // namespace
+
+TEST(Cli, RunsACaseAndWritesEveryOutput) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_ok");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("cell-steps per second"), std::string::npos) << r.output;
+    for (const char* f : {"case.yaml", "timeseries.csv", "timeseries.h5", "fields.xdmf", "summary.txt"})
+        EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+    EXPECT_TRUE(latest_checkpoint(dir / "out").has_value());
+}
+
+TEST(Cli, BadInputIsRejectedNamingTheKey) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_bad");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const std::string c = "run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'";
+    struct Bad {
+        std::string args, key, reason;
+    };
+    const std::vector<Bad> cases = {
+        {c + " --set fluid.viscosty=0.1", "fluid.viscosty", "unknown key"},
+        {c + " --set fluid.density=-1000", "fluid.density", "-1000"},
+        {c + " --set domain.x.cells=abc", "domain.x.cells", "abc"},
+        {c + " --set numerics.convection=upwind", "numerics.convection", "upwind"},
+        {c + " --set output.probes=[[2.0,0.5]]", "output.probes", "outside"},
+        {"run '" + (dir / "missing.yaml").string() + "'", "missing.yaml", ""},
+        {c + " --restart '" + (dir / "nope.h5").string() + "'", "--restart", "nope.h5"},
+    };
+    for (const auto& bad : cases) {
+        const auto r = run_chute(bad.args, dir);
+        EXPECT_EQ(r.exit_code, 2) << bad.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(bad.key), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(bad.reason), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(dir / "out")) << "no run may start on a bad case: " << bad.args;
+    }
+}
+
+TEST(Cli, RestartFromAnotherGridIsRejected) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_grid");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const std::string c = "run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'";
+    ASSERT_EQ(run_chute(c, dir).exit_code, 0);
+    const auto checkpoint = latest_checkpoint(dir / "out");
+    ASSERT_TRUE(checkpoint);
+    const auto r = run_chute(c + " --set domain.x.cells=32 --restart '" + checkpoint->string() + "'", dir);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.output.find("does not match"), std::string::npos) << r.output;
+}
+
+// A run with a time step far above the diffusion limit (dt = 0.05 against 0.2 h^2/(2 nu) = 0.004)
+// blows up; it must stop with a message naming the cause, exit 3, and keep the checkpoints and the
+// time series it wrote before (each still readable).
+TEST(Cli, DivergingRunStopsCleanlyKeepingOutputs) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_diverge");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() +
+                                 "' --set numerics.dt=0.05 --set time.end=50 --set output.checkpoint_interval=0.1",
+                             dir);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("diverged"), std::string::npos) << r.output;
+    const auto checkpoint = latest_checkpoint(dir / "out");
+    ASSERT_TRUE(checkpoint) << "checkpoints written before the divergence must be kept";
+    const auto u = read_field(*checkpoint, "u");
+    for (double x : u) ASSERT_TRUE(std::isfinite(x));
+    EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.csv"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.h5"));
+    for (const auto& e : fs::directory_iterator(dir / "out"))
+        EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
