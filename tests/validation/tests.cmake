@@ -2,6 +2,7 @@
 # carry the label "slow" and are left out of CI (run them with `ctest -L slow`).
 add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_lid_driven_cavity.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_poiseuille.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_core GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -17,3 +18,5 @@ endfunction()
 chute_validation(cavity_re100_64 Cavity.Re100Grid64 2 "validation")
 chute_validation(cavity_re1000_128 Cavity.Re1000Grid128 2 "validation")
 chute_validation(cavity_re100_128 Cavity.Re100Grid128 2 "validation")
+chute_validation(poiseuille_stretched Poiseuille.StretchedGridSecondOrder 1 "validation")
+chute_validation(poiseuille_inflow_outflow Poiseuille.InflowOutflowChannelKeepsTheParabola 2 "validation")
