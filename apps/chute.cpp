@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "case_file.hpp"
+#include "hdf5_file.hpp"
 #include "simulation.hpp"
 
 namespace {
@@ -56,7 +57,7 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     if (rank == 0) {
         const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
         std::printf("%s", text.c_str());
-        std::ofstream(options.out_dir / "summary.txt") << text;
+        chute::write_text_atomically(options.out_dir / "summary.txt", text);
         if (config.plots) {
             const std::string cmd = "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
             if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "chute: plotting failed (results are complete)\n");

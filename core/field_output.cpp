@@ -8,18 +8,12 @@
 #include <stdexcept>
 
 #include "gather.hpp"
+#include "exact_text.hpp"
 #include "hdf5_file.hpp"
 
 namespace chute {
 
 namespace {
-
-// Shortest text that reads back as the same double.
-std::string exact(double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
 
 std::string xml_escape(const std::string& text) {
     std::string out;
@@ -146,7 +140,7 @@ void FieldOutput::write_xdmf() const {
             const std::string points = std::to_string(s.ny + 1) + " " + std::to_string(s.nx + 1);
             const std::string cells = std::to_string(s.ny) + " " + std::to_string(s.nx);
             out << "      <Grid Name=\"step " << s.step << "\" GridType=\"Uniform\">\n"
-                << "        <Time Value=\"" << exact(s.time) << "\"/>\n"
+                << "        <Time Value=\"" << exact_text(s.time) << "\"/>\n"
                 << "        <Topology TopologyType=\"2DRectMesh\" Dimensions=\"" << points << "\"/>\n"
                 << "        <Geometry GeometryType=\"VXVY\">\n"
                 << "          <DataItem Dimensions=\"" << s.nx + 1

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -400,6 +401,15 @@ void write_atomically(const std::filesystem::path& target,
     }
     const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
     sync_path(dir, true);  // best effort: the rename is done either way
+}
+
+void write_text_atomically(const std::filesystem::path& target, const std::string& text) {
+    write_atomically(target, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp);
+        out << text;
+        out.close();
+        if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    });
 }
 
 }  // namespace chute

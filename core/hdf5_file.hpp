@@ -77,5 +77,7 @@ class Hdf5File {
 // over `target`. If `write` throws, the temporary is removed and `target` (an older good file) is untouched.
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
+// The same for a text file.
+void write_text_atomically(const std::filesystem::path& target, const std::string& text);
 
 }  // namespace chute

@@ -13,6 +13,7 @@
 #include "diagnostics.hpp"
 #include "field_output.hpp"
 #include "gather.hpp"
+#include "hdf5_file.hpp"
 #include "timeseries.hpp"
 
 namespace chute {
@@ -46,17 +47,6 @@ std::string format_hms(double seconds) {
     return buf;
 }
 
-// Writes `text` to `path` atomically.
-void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
-    const auto tmp = std::filesystem::path(path.string() + ".tmp");
-    {
-        std::ofstream out(tmp);
-        out << text;
-        if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, path);
-}
-
 }  // namespace
 
 RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, MPI_Comm comm) {
@@ -65,7 +55,8 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     const bool root = rank == 0;
     if (root) std::filesystem::create_directories(options.out_dir);
     MPI_Barrier(comm);
-    if (root && !options.case_yaml.empty()) write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
+    if (root && !options.case_yaml.empty())
+        write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
 
     FlowSolver solver(config, comm);
     const Grid& grid = solver.grid();

@@ -5,17 +5,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "exact_text.hpp"
 #include "hdf5_file.hpp"
 
 namespace chute {
 
 namespace {
-
-std::string exact(double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
 
 std::string join(const std::vector<std::string>& items) {
     std::string out;
@@ -110,7 +105,7 @@ void TimeSeries::append(const std::vector<double>& row) {
     std::string line;
     for (std::size_t k = 0; k < row.size(); ++k) {
         if (k > 0) line += ',';
-        line += exact(row[k]);
+        line += exact_text(row[k]);
     }
     line += '\n';
     csv_ << line;
