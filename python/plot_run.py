@@ -20,7 +20,8 @@ import numpy as np  # noqa: E402
 def load_timeseries(run_dir):
     path = os.path.join(run_dir, "timeseries.h5")
     with h5py.File(path, "r") as f:
-        columns = [c.decode() if isinstance(c, bytes) else str(c) for c in f.attrs["columns"]]
+        columns = f.attrs["columns"]  # one comma-separated string (core/timeseries.cpp)
+        columns = (columns.decode() if isinstance(columns, bytes) else str(columns)).split(",")
         return {c: f[c.replace("/", "_")][...] for c in columns}
 
 
@@ -71,7 +72,9 @@ def plot_fields(run_dir):
     lim = np.percentile(np.abs(w), 99) or 1.0
     m = ax[1].pcolormesh(x, y, w, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="flat")
     fig.colorbar(m, ax=ax[1], label="vorticity (1/s)")
-    m = ax[2].pcolormesh(x, y, p, cmap="coolwarm", shading="flat")
+    # The lid corners of a cavity (and sharp edges later) are pressure singularities: clip the colour scale.
+    lo, hi = np.percentile(p, [1, 99])
+    m = ax[2].pcolormesh(x, y, p, cmap="coolwarm", vmin=lo, vmax=hi, shading="flat")
     fig.colorbar(m, ax=ax[2], label="dynamic pressure (Pa)")
     for a, title in zip(ax, ["speed and streamlines", "vorticity", "pressure"]):
         a.set_aspect("equal")

@@ -146,10 +146,15 @@ TEST(Cli, RunsACaseAndWritesEveryOutput) {
     if (!single_rank()) GTEST_SKIP() << "starts its own process";
     const fs::path dir = scratch("cli_ok");
     write_text(dir / "case.yaml", kSmallCavity);
-    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'", dir);
+    // With the plots, as the README's first command makes them (Debian's python3-matplotlib and -h5py).
+    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() +
+                                 "' --set output.plots=true --set output.probes=[[0.5,0.5]]",
+                             dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("cell-steps per second"), std::string::npos) << r.output;
-    for (const char* f : {"case.yaml", "timeseries.csv", "timeseries.h5", "fields.xdmf", "summary.txt"})
+    EXPECT_EQ(r.output.find("plotting failed"), std::string::npos) << r.output;
+    for (const char* f : {"case.yaml", "timeseries.csv", "timeseries.h5", "fields.xdmf", "summary.txt",
+                          "timeseries.png", "fields.png"})
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
     EXPECT_TRUE(latest_checkpoint(dir / "out").has_value());
 }
