@@ -16,8 +16,8 @@ inline double face_value(double uu, double u, double d, double central) {
     } else {
         const double a = u - uu, b = d - u;
         if constexpr (S == ConvectionScheme::van_leer) {
-            // psi(r) b = 2ab / (|a| + |b|) for ab > 0, else 0 (van Leer 1974).
-            return (a * b > 0.0) ? u + a * b / (std::abs(a) + std::abs(b)) : u;
+            // 1/2 psi(r) b = ab / (a + b) for ab > 0 (same sign, so a + b != 0), else 0 (van Leer 1974).
+            return (a * b > 0.0) ? u + a * b / (a + b) : u;
         } else {
             // Koren (1993): psi = max(0, min(2r, (1 + 2r)/3, 2)); third order where smooth.
             if (b == 0.0) return u;
