@@ -35,7 +35,7 @@ FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config
     poisson_ = std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance,
                                                config_.poisson_max_iterations);
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);
-    p_ = source_ = Field2D(*grid_);
+    p_ = p_old_ = source_ = Field2D(*grid_);
     set_initial_condition();
 }
 
@@ -59,6 +59,7 @@ void FlowSolver::set_initial_condition() {
     time_ = 0.0;
     step_ = 0;
     dt_previous_ = 0.0;
+    pressure_history_ = false;
     refresh_ghosts();
 }
 
@@ -73,12 +74,14 @@ void FlowSolver::restore(long step, double time, double dt_previous) {
     step_ = step;
     time_ = time;
     dt_previous_ = dt_previous;
+    pressure_history_ = step > 0;  // the checkpoint carries p^{n-1}
     refresh_ghosts();
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
     grid_->set_lines(std::move(x_lines), std::move(y_lines));
     poisson_->update_matrix();
+    pressure_history_ = false;
 }
 
 double FlowSolver::next_dt() const {
@@ -134,6 +137,15 @@ StepStats FlowSolver::advance(double dt) {
             }
         MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_SUM, grid_->comm());
     }
+    // Starting guess p^n + r (p^n - p^{n-1}): one O(dt^2) extrapolation saves a third of the PCG
+    // iterations against starting from p^n (6 -> 4 on the Re 1000 cavity, docs/performance.md).
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double pn = p_(i, j);
+            if (pressure_history_) p_(i, j) = pn + r * (pn - p_old_(i, j));
+            p_old_(i, j) = pn;
+        }
+    pressure_history_ = true;
     const PoissonStats ps = poisson_->solve(source_, p_, 1e-14 * std::sqrt(scale));
     stats.poisson_iterations = ps.iterations;
     stats.poisson_residual = ps.relative_residual;

@@ -7,7 +7,8 @@
 //   H^n  = -C(u^n) + nu L(u^n) + f
 //   u*   = u^n + dt [ (1 + r/2) H^n - (r/2) H^{n-1} ],     r = dt^n / dt^{n-1}   (variable-step AB2)
 //   boundary faces of u* (inflow, wall, outflow)
-//   laplacian(p^{n+1}) = div(u*) / dt                        (hypre PCG + PFMG)
+//   laplacian(p^{n+1}) = div(u*) / dt                        (hypre PCG + PFMG, starting from the
+//                                                             linear extrapolation of p^{n-1}, p^n)
 //   u^{n+1} = u* - dt grad p^{n+1}
 // The first step (and the first after a change of scheme) is forward Euler.
 #include <memory>
@@ -52,6 +53,7 @@ public:
     Velocity& velocity() { return vel_; }
     Field2D& pressure() { return p_; }
     Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
+    Field2D& previous_pressure() { return p_old_; }  // p^{n-1}, for the Poisson solver's starting guess
     double previous_dt() const { return dt_previous_; }
     void restore(long step, double time, double dt_previous);
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
@@ -67,7 +69,8 @@ private:
     std::unique_ptr<BoundaryConditions> bc_;
     std::unique_ptr<PoissonSolver> poisson_;
     Velocity vel_, star_, rhs_, rhs_old_;
-    Field2D p_, source_;
+    Field2D p_, p_old_, source_;
+    bool pressure_history_ = false;  // p_old_ holds p^{n-1} (false on the first step and after a grid change)
     double time_ = 0.0, dt_previous_ = 0.0;
     long step_ = 0;
 };

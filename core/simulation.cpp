@@ -27,6 +27,7 @@ std::vector<CheckpointField> checkpoint_fields(FlowSolver& s) {
     return {{"u", &s.velocity().u, 1, 0},
             {"v", &s.velocity().v, 0, 1},
             {"p", &s.pressure(), 0, 0},
+            {"p_old", &s.previous_pressure(), 0, 0},
             {"rhs_old_u", &s.previous_rhs().u, 1, 0},
             {"rhs_old_v", &s.previous_rhs().v, 0, 1}};
 }

@@ -92,7 +92,7 @@ TEST(Restart, StopAndRestartEqualsStraightRun) {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     if (rank == 0) {
-        for (const char* name : {"u", "v", "p", "rhs_old_u", "rhs_old_v"}) {
+        for (const char* name : {"u", "v", "p", "p_old", "rhs_old_u", "rhs_old_v"}) {
             const auto x = read_field(straight.last_checkpoint, name), y = read_field(resumed.last_checkpoint, name);
             ASSERT_EQ(x.size(), y.size());
             for (std::size_t k = 0; k < x.size(); ++k) ASSERT_EQ(x[k], y[k]) << name << "[" << k << "]";
