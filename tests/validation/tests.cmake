@@ -23,3 +23,4 @@ chute_validation(poiseuille_inflow_outflow Poiseuille.InflowOutflowChannelKeepsT
 chute_validation(poiseuille_zero_stress Poiseuille.ZeroStressOutflowGivesTheExactPressureGradient 2 "validation")
 chute_validation(cavity_re1000_128_van_leer Cavity.Re1000Grid128VanLeer 2 "validation")
 chute_validation(cavity_re1000_128_koren Cavity.Re1000Grid128Koren 2 "validation")
+chute_validation(cavity_re1000_256 Cavity.Re1000Grid256 2 "validation;slow")
