@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <cstdio>
+
 #include <HYPRE_utilities.h>
 
 int main(int argc, char** argv) {
@@ -16,6 +18,17 @@ int main(int argc, char** argv) {
         delete listeners.Release(listeners.default_result_printer());
     }
     const int result = RUN_ALL_TESTS();
+    // Ranks other than 0 print nothing while the tests run: name what failed there, so a failure seen
+    // only on rank 1 (a patch-local check, say) is not a silent non-zero exit.
+    if (rank != 0 && result != 0) {
+        const auto& unit = *::testing::UnitTest::GetInstance();
+        for (int s = 0; s < unit.total_test_suite_count(); ++s) {
+            const auto& suite = *unit.GetTestSuite(s);
+            for (int t = 0; t < suite.total_test_count(); ++t)
+                if (suite.GetTestInfo(t)->result()->Failed())
+                    std::fprintf(stderr, "rank %d: FAILED %s.%s\n", rank, suite.name(), suite.GetTestInfo(t)->name());
+        }
+    }
     HYPRE_Finalize();
     MPI_Finalize();
     return result;
