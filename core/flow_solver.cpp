@@ -11,9 +11,8 @@
 namespace chute {
 
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using clock = std::chrono::steady_clock;
+double seconds_since(clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); }
 }  // namespace
 
 Axis build_axis(const AxisConfig& c, bool periodic) {
@@ -95,64 +94,70 @@ void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
     add_diffusion(*grid_, config_.viscosity, vel, bc_->u_first(), bc_->v_first(), rhs);
 }
 
-StepStats FlowSolver::advance(double dt) {
-    using clock = std::chrono::steady_clock;
-    StepStats stats;
-    if (dt <= 0.0) dt = next_dt();
-    stats.dt = dt;
-    const int nx = grid_->nx(), ny = grid_->ny();
-
-    // 1. Momentum prediction, AB2 (Euler on the first step).
-    auto t0 = clock::now();
-    explicit_rhs(vel_, rhs_);
-    const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;
+void FlowSolver::predict_velocity(double dt, double r) {
     const double c_new = dt * (1.0 + 0.5 * r), c_old = -dt * 0.5 * r;
     const double fx = dt * config_.body_force[0], fy = dt * config_.body_force[1];
+    const int nx = grid_->nx(), ny = grid_->ny();
     for (int j = 0; j < ny; ++j)
         for (int i = bc_->u_first(); i < nx; ++i)
             star_.u(i, j) = vel_.u(i, j) + c_new * rhs_.u(i, j) + c_old * rhs_old_.u(i, j) + fx;
     for (int j = bc_->v_first(); j < ny; ++j)
         for (int i = 0; i < nx; ++i)
             star_.v(i, j) = vel_.v(i, j) + c_new * rhs_.v(i, j) + c_old * rhs_old_.v(i, j) + fy;
-    // Boundary faces of u*: prescribed values, convective or zero-stress outflow.
-    bc_->set_outflow(vel_, star_, dt);
-    halo_->exchange(star_);
-    stats.seconds_momentum = std::chrono::duration<double>(clock::now() - t0).count();
+}
 
-    // 2. Pressure Poisson equation, warm-started from the previous pressure.
-    t0 = clock::now();
-    divergence(*grid_, star_, 1.0 / dt, source_);
-    // Residual floor: the round-off level of the right-hand side. div(u*) sums face velocities of size
-    // |u| / h, so its rounding error is ~eps |u| / h per cell; asking for less would never stop when the
-    // flow is (nearly) at rest. 1e-14 is ~50 eps.
-    double scale = 0.0;
-    {
-        const auto& X = grid_->lx();
-        const auto& Y = grid_->ly();
-        for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < nx; ++i) {
-                // V (|u|/w_x + |v|/w_y), without the divisions; the 1/dt is applied once below.
-                const double b = std::abs(star_.u(i, j)) * Y.w(j) + std::abs(star_.v(i, j)) * X.w(i);
-                scale += b * b;
-            }
-        MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_SUM, grid_->comm());
-        scale /= dt * dt;
-    }
-    // Starting guess p^n + r (p^n - p^{n-1}): one O(dt^2) extrapolation saves a third of the PCG
-    // iterations against starting from p^n (6 -> 4 on the Re 1000 cavity, docs/performance.md).
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
+// Starting guess p^n + r (p^n - p^{n-1}): one O(dt^2) extrapolation saves a third of the PCG iterations
+// against starting from p^n (6 -> 4 on the Re 1000 cavity, docs/performance.md).
+void FlowSolver::extrapolate_pressure_guess(double r) {
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i) {
             const double pn = p_(i, j);
             if (pressure_history_) p_(i, j) = pn + r * (pn - p_old_(i, j));
             p_old_(i, j) = pn;
         }
     pressure_history_ = true;
-    const PoissonStats ps = poisson_->solve(source_, p_, 1e-14 * std::sqrt(scale));
+}
+
+// The round-off level of the Poisson right-hand side V div(u*)/dt: div(u*) sums face velocities of size
+// |u| / h, so its rounding error is ~eps |u| / h per cell. Asking for a smaller residual would never stop
+// when the flow is (nearly) at rest; 1e-14 is ~50 eps.
+double FlowSolver::poisson_residual_floor(double dt) const {
+    const auto& X = grid_->lx();
+    const auto& Y = grid_->ly();
+    double sum = 0.0;
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i) {
+            const double b = std::abs(star_.u(i, j)) * Y.w(j) + std::abs(star_.v(i, j)) * X.w(i);  // V |u|/h
+            sum += b * b;
+        }
+    MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, grid_->comm());
+    return 1e-14 * std::sqrt(sum) / dt;
+}
+
+StepStats FlowSolver::advance(double dt) {
+    StepStats stats;
+    if (dt <= 0.0) dt = next_dt();
+    stats.dt = dt;
+    const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;  // 0: forward Euler on the first step
+
+    // 1. Momentum prediction (AB2), then the boundary faces of u* (prescribed, convective or zero-stress).
+    auto t0 = clock::now();
+    explicit_rhs(vel_, rhs_);
+    predict_velocity(dt, r);
+    bc_->set_outflow(vel_, star_, dt);
+    halo_->exchange(star_);
+    stats.seconds_momentum = seconds_since(t0);
+
+    // 2. Pressure Poisson equation laplacian(p) = div(u*) / dt.
+    t0 = clock::now();
+    divergence(*grid_, star_, 1.0 / dt, source_);
+    extrapolate_pressure_guess(r);
+    const PoissonStats ps = poisson_->solve(source_, p_, poisson_residual_floor(dt));
     stats.poisson_iterations = ps.iterations;
     stats.poisson_residual = ps.relative_residual;
     stats.seconds_poisson = seconds_since(t0);
 
-    // 3. Projection onto divergence-free fields.
+    // 3. Projection onto divergence-free fields: u = u* - dt grad p.
     t0 = clock::now();
     halo_->exchange(p_);
     bc_->apply_pressure(p_);

@@ -61,7 +61,10 @@ public:
     void refresh_ghosts();
 
 private:
-    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;
+    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;      // H = -C(u) + nu L(u)
+    void predict_velocity(double dt, double r);                       // u* from u^n, H^n, H^{n-1}, f
+    void extrapolate_pressure_guess(double r);                        // p <- p^n + r (p^n - p^{n-1})
+    double poisson_residual_floor(double dt) const;                   // absolute tolerance of the solve
 
     CaseConfig config_;
     std::unique_ptr<Grid> grid_;
