@@ -48,8 +48,12 @@ Grid::Grid(Axis x, Axis y, MPI_Comm comm, int ranks_x, int ranks_y) : x_(std::mo
     } else {
         MPI_Dims_create(world, 2, dims_);
     }
-    if (dims_[0] > x_.cells() || dims_[1] > y_.cells())
-        throw std::invalid_argument("more MPI patches than cells in one direction");
+    // The halo exchange sends kGhost layers, so every patch needs at least kGhost cells each way.
+    if (dims_[0] * kGhost > x_.cells() || dims_[1] * kGhost > y_.cells())
+        throw std::invalid_argument("parallel.ranks: " + std::to_string(dims_[0]) + " x " + std::to_string(dims_[1]) +
+                                    " patches leave fewer than " + std::to_string(kGhost) + " cells per patch in a " +
+                                    "direction of the " + std::to_string(x_.cells()) + " x " +
+                                    std::to_string(y_.cells()) + " grid: use fewer ranks or more cells");
     int periods[2] = {x_.periodic() ? 1 : 0, y_.periodic() ? 1 : 0};
     MPI_Cart_create(comm, 2, dims_, periods, 0, &cart_);
     MPI_Comm_rank(cart_, &rank_);

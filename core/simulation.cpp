@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <sstream>
 
+#include "case_file.hpp"
 #include "checkpoint.hpp"
 #include "diagnostics.hpp"
 #include "field_output.hpp"
@@ -59,7 +61,15 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     if (root && !options.case_yaml.empty())
         write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
 
-    FlowSolver solver(config, comm);
+    // Grid and decomposition problems found only now (the rank count is not in the case file) are case
+    // errors too: same exit code, same kind of message.
+    std::unique_ptr<FlowSolver> solver_ptr;
+    try {
+        solver_ptr = std::make_unique<FlowSolver>(config, comm);
+    } catch (const std::invalid_argument& e) {
+        throw CaseError(e.what());
+    }
+    FlowSolver& solver = *solver_ptr;
     const Grid& grid = solver.grid();
     if (options.restart) {
         // Lines may have moved during the run that wrote the checkpoint: take them from the checkpoint.
