@@ -56,13 +56,8 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     const bool root = rank == 0;
-    if (root) std::filesystem::create_directories(options.out_dir);
-    MPI_Barrier(comm);
-    if (root && !options.case_yaml.empty())
-        write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
-
     // Grid and decomposition problems found only now (the rank count is not in the case file) are case
-    // errors too: same exit code, same kind of message.
+    // errors too: same exit code, same kind of message, and nothing is written.
     std::unique_ptr<FlowSolver> solver_ptr;
     try {
         solver_ptr = std::make_unique<FlowSolver>(config, comm);
@@ -70,6 +65,11 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         throw CaseError(e.what());
     }
     FlowSolver& solver = *solver_ptr;
+
+    if (root) std::filesystem::create_directories(options.out_dir);
+    MPI_Barrier(comm);
+    if (root && !options.case_yaml.empty())
+        write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
     const Grid& grid = solver.grid();
     if (options.restart) {
         // Lines may have moved during the run that wrote the checkpoint: take them from the checkpoint.
