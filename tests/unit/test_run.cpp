@@ -175,6 +175,7 @@ TEST(Cli, BadInputIsRejectedNamingTheKey) {
         {c + " --set output.probes=[[2.0,0.5]]", "output.probes", "outside"},
         {"run '" + (dir / "missing.yaml").string() + "'", "missing.yaml", ""},
         {c + " --restart '" + (dir / "nope.h5").string() + "'", "--restart", "nope.h5"},
+        {c + " --set parallel.ranks=[2,1]", "parallel.ranks", "do not match 1 MPI ranks"},
     };
     for (const auto& bad : cases) {
         const auto r = run_chute(bad.args, dir);
