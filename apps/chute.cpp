@@ -15,6 +15,7 @@
 #include "case_file.hpp"
 #include "hdf5_file.hpp"
 #include "simulation.hpp"
+#include "stop_request.hpp"
 
 namespace {
 
@@ -53,6 +54,7 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
         std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n",
                     config.name.c_str(), config.x.cells, config.y.cells, size, config.end_time,
                     options.out_dir.string().c_str());
+    chute::install_stop_handlers();
     const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
     if (rank == 0) {
         const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
@@ -62,6 +64,13 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
             const std::string cmd = "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
             if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "chute: plotting failed (results are complete)\n");
         }
+    }
+    if (summary.stopped_by_signal) {
+        if (rank == 0)
+            std::printf("chute: stopped early; continue with: chute run %s --out %s --restart %s\n",
+                        case_file.string().c_str(), options.out_dir.string().c_str(),
+                        summary.last_checkpoint.string().c_str());
+        return 128 + summary.stopped_by_signal;  // the shell's convention for "ended by signal N"
     }
     return 0;
 }

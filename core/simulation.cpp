@@ -16,6 +16,7 @@
 #include "field_output.hpp"
 #include "gather.hpp"
 #include "hdf5_file.hpp"
+#include "stop_request.hpp"
 #include "timeseries.hpp"
 
 namespace chute {
@@ -189,6 +190,13 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         iterations += st.poisson_iterations;
         summary.seconds_per_step_min = std::min(summary.seconds_per_step_min, step_seconds);
         summary.seconds_per_step_max = std::max(summary.seconds_per_step_max, step_seconds);
+
+        summary.stopped_by_signal = stop_requested(comm);
+        if (summary.stopped_by_signal) {
+            if (root) std::printf("chute: signal %d received: stopping after step %ld, t = %.6g, writing a checkpoint\n",
+                                  summary.stopped_by_signal, solver.step(), solver.time());
+            break;
+        }
 
         if (!options.quiet && root && config.progress_interval >= 0.0 &&
             since(last_progress) >= config.progress_interval) {

@@ -31,6 +31,7 @@ struct RunOptions {
 
 struct RunSummary {
     long steps = 0;             // steps taken in this run (after a restart: since the restart)
+    int stopped_by_signal = 0;  // SIGINT or SIGTERM received: the run stopped early, with a checkpoint
     double time = 0.0;          // final simulated time
     double wall_seconds = 0.0;  // time loop only
     double seconds_per_step_mean = 0.0, seconds_per_step_min = 0.0, seconds_per_step_max = 0.0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -110,9 +111,10 @@ struct CommandResult {
     std::string output;
 };
 
-CommandResult run_chute(const std::string& args, const fs::path& dir) {
+// `prefix` runs chute under another command (e.g. timeout).
+CommandResult run_chute(const std::string& args, const fs::path& dir, const std::string& prefix = "") {
     const fs::path log = dir / "chute.log";
-    const std::string cmd = std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1";
+    const std::string cmd = prefix + std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1";
     const int status = std::system(cmd.c_str());
     return {WEXITSTATUS(status), read_text(log)};
 }
@@ -219,4 +221,23 @@ TEST(Cli, DivergingRunStopsCleanlyKeepingOutputs) {
     EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.h5"));
     for (const auto& e : fs::directory_iterator(dir / "out"))
         EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
+
+// Ctrl-C (SIGINT) or a batch system's SIGTERM: the run finishes its step, writes a checkpoint, says how
+// to continue, and exits with 128 + the signal number; the restart then completes the run.
+TEST(Cli, SignalStopsWithACheckpointToContinueFrom) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_signal");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const std::string c = "run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'";
+    // 64^2 to t = 1000 takes minutes: a signal after 3 s always arrives mid-run.
+    const std::string grid = " --set domain.x.cells=64 --set domain.y.cells=64 --set time.end=1000";
+    const auto r = run_chute(c + grid, dir, "timeout --preserve-status -s INT 3 ");
+    EXPECT_EQ(r.exit_code, 128 + SIGINT) << r.output;
+    EXPECT_NE(r.output.find("continue with"), std::string::npos) << r.output;
+    const auto checkpoint = latest_checkpoint(dir / "out");
+    ASSERT_TRUE(checkpoint) << r.output;
+    const auto resumed = run_chute(c + grid + " --set time.max_steps=10 --restart '" + checkpoint->string() + "'", dir);
+    EXPECT_NE(resumed.output.find("10 steps"), std::string::npos) << resumed.output;
+    EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
 }
