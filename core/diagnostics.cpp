@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "projection.hpp"
+
 namespace chute {
 
 double kinetic_energy(const Grid& grid, const Velocity& vel) {
@@ -22,12 +24,9 @@ double kinetic_energy(const Grid& grid, const Velocity& vel) {
 }
 
 double max_divergence(const Grid& grid, const Velocity& vel) {
-    const auto& X = grid.lx();
-    const auto& Y = grid.ly();
     double m = 0.0;
     for (int j = 0; j < grid.ny(); ++j)
-        for (int i = 0; i < grid.nx(); ++i)
-            m = std::max(m, std::abs((vel.u(i + 1, j) - vel.u(i, j)) / X.w(i) + (vel.v(i, j + 1) - vel.v(i, j)) / Y.w(j)));
+        for (int i = 0; i < grid.nx(); ++i) m = std::max(m, std::abs(cell_divergence(grid, vel, i, j)));
     MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
     return m;
 }

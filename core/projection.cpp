@@ -3,11 +3,8 @@
 namespace chute {
 
 void divergence(const Grid& grid, const Velocity& vel, double scale, Field2D& out) {
-    const auto& X = grid.lx();
-    const auto& Y = grid.ly();
     for (int j = 0; j < grid.ny(); ++j)
-        for (int i = 0; i < grid.nx(); ++i)
-            out(i, j) = scale * ((vel.u(i + 1, j) - vel.u(i, j)) / X.w(i) + (vel.v(i, j + 1) - vel.v(i, j)) / Y.w(j));
+        for (int i = 0; i < grid.nx(); ++i) out(i, j) = scale * cell_divergence(grid, vel, i, j);
 }
 
 void subtract_pressure_gradient(const Grid& grid, const BoundaryConditions& bc, const Field2D& p, double dt,

@@ -10,6 +10,11 @@
 
 namespace chute {
 
+// The discrete divergence of cell (i, j): the one definition used by the projection and the diagnostics.
+inline double cell_divergence(const Grid& grid, const Velocity& vel, int i, int j) {
+    return (vel.u(i + 1, j) - vel.u(i, j)) / grid.lx().w(i) + (vel.v(i, j + 1) - vel.v(i, j)) / grid.ly().w(j);
+}
+
 // out(i, j) = scale * div(vel) on the owned cells.
 void divergence(const Grid& grid, const Velocity& vel, double scale, Field2D& out);
 // vel -= dt grad(p) on the advanced faces and on boundary faces with a pressure (Dirichlet) condition.
