@@ -3,13 +3,18 @@
 //
 //   d u / dt + div(u u) = -grad p + nu laplacian(u) + f,      div u = 0
 //
-// One step (Adams-Bashforth 2 for convection and diffusion, Kim & Moin 1985 style projection):
-//   H^n  = -C(u^n) + nu L(u^n) + f
-//   u*   = u^n + dt [ (1 + r/2) H^n - (r/2) H^{n-1} ],     r = dt^n / dt^{n-1}   (variable-step AB2)
-//   boundary faces of u* (inflow, wall, outflow)
-//   laplacian(p^{n+1}) = div(u*) / dt                        (hypre PCG + PFMG, starting from the
-//                                                             linear extrapolation of p^{n-1}, p^n)
-//   u^{n+1} = u* - dt grad p^{n+1}
+// One step (Adams-Bashforth 2 for convection and diffusion, incremental pressure-correction projection,
+// van Kan 1986; the form Uhlmann 2005 uses so that immersed-boundary forcing sees the pressure gradient):
+//   predict:
+//     H^n  = -C(u^n) + nu L(u^n) + f
+//     u*   = u^n + dt [ (1 + r/2) H^n - (r/2) H^{n-1} - grad p^{n-1/2} ],   r = dt^n / dt^{n-1}
+//     boundary faces of u* (inflow, wall, outflow)
+//   (an immersed-boundary forcing may edit u* here: ibm/direct_forcing)
+//   project:
+//     laplacian(phi) = div(u*) / dt          (hypre PCG + PFMG, starting from r (p^{n-1/2} - p^{n-3/2}))
+//     u^{n+1} = u* - dt grad phi,   p^{n+1/2} = p^{n-1/2} + phi
+// With explicit diffusion this is the same discrete system as solving for p directly (phi = p^{n+1/2} -
+// p^{n-1/2}); the pressure is second order at t^{n+1/2} (tests/unit/test_taylor_green.cpp).
 // The first step (and the first after a change of scheme) is forward Euler.
 #include <memory>
 
@@ -36,8 +41,13 @@ public:
 
     // Impose the initial condition of the case (uniform current or Taylor-Green vortex) at time 0.
     void set_initial_condition();
-    // Advance by one step of size dt (or the stable step if dt <= 0).
+    // Advance by one step of size dt (or the stable step if dt <= 0): predict() then project().
     StepStats advance(double dt = 0.0);
+    // The two halves of a step, for a caller that forces the predicted velocity in between.
+    // predict() returns the dt it uses; predicted() is u* (owned faces valid, halos not) until project().
+    double predict(double dt = 0.0);
+    Velocity& predicted() { return star_; }
+    StepStats project();
     // The step advance() would take: min of the CFL and diffusion limits, max_dt, or the fixed dt.
     double next_dt() const;
 
@@ -53,7 +63,7 @@ public:
     Velocity& velocity() { return vel_; }
     Field2D& pressure() { return p_; }
     Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
-    Field2D& previous_pressure() { return p_old_; }  // p^{n-1}, for the Poisson solver's starting guess
+    Field2D& previous_pressure() { return p_old_; }  // p^{n-3/2}, for the Poisson solver's starting guess
     double previous_dt() const { return dt_previous_; }
     void restore(long step, double time, double dt_previous);
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
@@ -62,8 +72,8 @@ public:
 
 private:
     void explicit_rhs(const Velocity& vel, Velocity& rhs) const;      // H = -C(u) + nu L(u)
-    void predict_velocity(double dt, double r);                       // u* from u^n, H^n, H^{n-1}, f
-    void extrapolate_pressure_guess(double r);                        // p <- p^n + r (p^n - p^{n-1})
+    void predict_velocity(double dt, double r);                       // u* from u^n, H^n, H^{n-1}, f, p
+    void pressure_increment_guess(double r);                          // phi <- r (p^n - p^{n-1})
     double poisson_residual_floor(double dt) const;                   // absolute tolerance of the solve
 
     CaseConfig config_;
@@ -72,7 +82,8 @@ private:
     std::unique_ptr<BoundaryConditions> bc_;
     std::unique_ptr<PoissonSolver> poisson_;
     Velocity vel_, star_, rhs_, rhs_old_;
-    Field2D p_, p_old_, source_;
+    Field2D p_, p_old_, phi_, source_;
+    StepStats pending_;  // the predict() half of the step being taken
     bool pressure_history_ = false;  // p_old_ holds p^{n-1} (false on the first step and after a grid change)
     double time_ = 0.0, dt_previous_ = 0.0;
     long step_ = 0;
