@@ -29,6 +29,43 @@ struct BoundaryConfig {
     OutflowKind outflow = OutflowKind::convective;
 };
 
+// ---- Immersed bodies (ibm/) ----
+enum class BodyShape { circle, rectangle, polygon, plane, segment };
+enum class MotionType { fixed, constant_velocity, oscillation, uniform_acceleration };
+enum class DeltaKernel { roma3, peskin4 };
+
+// Prescribed motion of a body's reference point (its centre of area) and angle, from its initial place:
+//   fixed; constant_velocity: x0 + V t; oscillation: x0 + A sin(2 pi f t + phase);
+//   uniform_acceleration (from rest): x0 + a t^2 / 2.  Angles likewise.
+struct MotionConfig {
+    MotionType type = MotionType::fixed;
+    std::array<double, 2> velocity{0.0, 0.0}, amplitude{0.0, 0.0}, acceleration{0.0, 0.0};
+    double angular_velocity = 0.0, angular_amplitude = 0.0, angular_acceleration = 0.0;  // rad, s
+    double frequency = 0.0, phase = 0.0;                                                 // Hz, rad
+};
+
+struct BodyConfig {
+    std::string name;
+    BodyShape shape = BodyShape::circle;
+    std::array<double, 2> centre{0.0, 0.0};      // circle, rectangle
+    double diameter = 0.0;                       // circle
+    std::array<double, 2> size{0.0, 0.0};        // rectangle: width, height (before rotation)
+    double angle = 0.0;                          // rad: rectangle/polygon rotation, plane inclination
+    std::vector<std::array<double, 2>> vertices; // polygon
+    std::array<double, 2> point{0.0, 0.0};       // plane: a point on it
+    std::array<double, 2> from{0.0, 0.0}, to{0.0, 0.0};  // segment
+    MotionConfig motion;
+    double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
+};
+
+struct IbmConfig {
+    DeltaKernel kernel = DeltaKernel::roma3;
+    int forcing_iterations = 3;              // multi-direct forcing (Breugem 2012)
+    double marker_spacing = 1.0;             // in grid cells
+    double retraction = 0.0;                 // markers moved inwards by this many cells
+    std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
+};
+
 enum class ConvectionScheme { central, van_leer, koren };
 enum class InitialCondition { uniform, taylor_green };
 
@@ -45,6 +82,9 @@ struct CaseConfig {
     double taylor_green_amplitude = 1.0;
 
     std::array<BoundaryConfig, 4> boundary;  // indexed by Side: left, right, bottom, top
+
+    std::vector<BodyConfig> bodies;
+    IbmConfig ibm;
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -194,6 +195,166 @@ std::vector<CaseKey> make_schema() {
          .meaning = "Outflow condition: `convective` (du_n/dt + U du_n/dn = 0, U the mean exit speed: "
                     "eddies leave cleanly) or `zero_stress` (du_n/dn = 0 and p = 0: zero normal stress)."},
 
+        {.path = "bodies",
+         .type = K::section,
+         .meaning = "Immersed bodies, each under a name of its choosing (letters, digits, _ and -); the "
+                    "name labels its output file `body_<name>.csv`. No bodies: no forcing."},
+        {.path = "bodies.<body>", .type = K::section, .meaning = "One body."},
+        {.path = "bodies.<body>.shape",
+         .type = K::choice,
+         .required = true,
+         .choices = {"circle", "rectangle", "polygon", "plane", "segment"},
+         .meaning = "`circle`; `rectangle` (the block); `polygon` (any closed outline); `plane` (a static "
+                    "straight boundary across the domain: a bed or a slope); `segment` (a static straight "
+                    "piece of boundary between two points). Planes and segments have their solid on the "
+                    "right of their direction: a plane at angle 0 has its solid below."},
+        {.path = "bodies.<body>.centre",
+         .type = K::vector2,
+         .required = true,
+         .when_key = "shape",
+         .when_values = {"circle", "rectangle"},
+         .units = "m",
+         .meaning = "Initial centre of the circle or rectangle."},
+        {.path = "bodies.<body>.diameter",
+         .type = K::number,
+         .required = true,
+         .min = above(0),
+         .when_key = "shape",
+         .when_values = {"circle"},
+         .units = "m",
+         .meaning = "Diameter of the circle."},
+        {.path = "bodies.<body>.size",
+         .type = K::vector2,
+         .required = true,
+         .min = above(0),
+         .when_key = "shape",
+         .when_values = {"rectangle"},
+         .units = "m",
+         .meaning = "Width (along x before rotation) and height of the rectangle."},
+        {.path = "bodies.<body>.vertices",
+         .type = K::point_list,
+         .required = true,
+         .when_key = "shape",
+         .when_values = {"polygon"},
+         .units = "m",
+         .meaning = "Corners of the polygon in place, in order around it (either way round); at least 3. Its "
+                    "centre is its centroid."},
+        {.path = "bodies.<body>.angle",
+         .type = K::number,
+         .default_value = "0.0",
+         .when_key = "shape",
+         .when_values = {"rectangle", "polygon", "plane"},
+         .units = "deg",
+         .meaning = "Rectangle, polygon: initial rotation about the centre, counterclockwise. Plane: "
+                    "inclination of its direction from the x axis (0: a horizontal bed, solid below; 30: a "
+                    "slope rising to the right, solid below it)."},
+        {.path = "bodies.<body>.point",
+         .type = K::vector2,
+         .required = true,
+         .when_key = "shape",
+         .when_values = {"plane"},
+         .units = "m",
+         .meaning = "A point of the plane, inside the domain."},
+        {.path = "bodies.<body>.from",
+         .type = K::vector2,
+         .required = true,
+         .when_key = "shape",
+         .when_values = {"segment"},
+         .units = "m",
+         .meaning = "First end of the segment."},
+        {.path = "bodies.<body>.to",
+         .type = K::vector2,
+         .required = true,
+         .when_key = "shape",
+         .when_values = {"segment"},
+         .units = "m",
+         .meaning = "Second end of the segment; the solid lies on the right going from `from` to `to`."},
+        {.path = "bodies.<body>.motion",
+         .type = K::section,
+         .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "
+                    "fixed)."},
+        {.path = "bodies.<body>.motion.type",
+         .type = K::choice,
+         .default_value = "fixed",
+         .choices = {"fixed", "constant_velocity", "oscillation", "uniform_acceleration"},
+         .meaning = "`fixed`; `constant_velocity`: x = x0 + V t; `oscillation`: x = x0 + A sin(2 pi f t + "
+                    "phase); `uniform_acceleration` from rest: x = x0 + a t^2/2. The angle follows the same "
+                    "law with its own rate, amplitude or acceleration."},
+        {.path = "bodies.<body>.motion.velocity",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .when_key = "type",
+         .when_values = {"constant_velocity"},
+         .units = "m/s",
+         .meaning = "Velocity V of the centre."},
+        {.path = "bodies.<body>.motion.angular_velocity",
+         .type = K::number,
+         .default_value = "0.0",
+         .when_key = "type",
+         .when_values = {"constant_velocity"},
+         .units = "rad/s",
+         .meaning = "Angular velocity, counterclockwise."},
+        {.path = "bodies.<body>.motion.amplitude",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .when_key = "type",
+         .when_values = {"oscillation"},
+         .units = "m",
+         .meaning = "Amplitude A of the centre's oscillation (a negative component reverses its phase)."},
+        {.path = "bodies.<body>.motion.angular_amplitude",
+         .type = K::number,
+         .default_value = "0.0",
+         .when_key = "type",
+         .when_values = {"oscillation"},
+         .units = "deg",
+         .meaning = "Amplitude of the angle's oscillation."},
+        {.path = "bodies.<body>.motion.frequency",
+         .type = K::number,
+         .required = true,
+         .min = above(0),
+         .when_key = "type",
+         .when_values = {"oscillation"},
+         .units = "Hz",
+         .meaning = "Frequency f of the oscillation."},
+        {.path = "bodies.<body>.motion.phase",
+         .type = K::number,
+         .default_value = "0.0",
+         .when_key = "type",
+         .when_values = {"oscillation"},
+         .units = "deg",
+         .meaning = "Phase of the oscillation at t = 0."},
+        {.path = "bodies.<body>.motion.acceleration",
+         .type = K::vector2,
+         .default_value = "[0.0, 0.0]",
+         .when_key = "type",
+         .when_values = {"uniform_acceleration"},
+         .units = "m/s^2",
+         .meaning = "Acceleration a of the centre."},
+        {.path = "bodies.<body>.motion.angular_acceleration",
+         .type = K::number,
+         .default_value = "0.0",
+         .when_key = "type",
+         .when_values = {"uniform_acceleration"},
+         .units = "rad/s^2",
+         .meaning = "Angular acceleration, counterclockwise."},
+        {.path = "bodies.<body>.reference",
+         .type = K::section,
+         .meaning = "Scales of the force coefficients C = F / (0.5 rho U^2 L depth) in the body's time "
+                    "series."},
+        {.path = "bodies.<body>.reference.velocity",
+         .type = K::number,
+         .default_value = "1.0",
+         .min = above(0),
+         .units = "m/s",
+         .meaning = "Reference speed U."},
+        {.path = "bodies.<body>.reference.length",
+         .type = K::number,
+         .default_doc = "size across x",
+         .min = above(0),
+         .units = "m",
+         .meaning = "Reference length L. Default: the body's height (its extent across the x direction): "
+                    "a circle's diameter, a rectangle's height; a plane's or segment's length."},
+
         {.path = "numerics", .type = K::section, .meaning = "Discretisation, time step and solver settings."},
         {.path = "numerics.convection",
          .type = K::choice,
@@ -228,6 +389,40 @@ std::vector<CaseKey> make_schema() {
          .min = above(0),
          .units = "s",
          .meaning = "Upper limit of the time step."},
+        {.path = "numerics.ibm", .type = K::section, .meaning = "Immersed-boundary forcing and force sampling."},
+        {.path = "numerics.ibm.kernel",
+         .type = K::choice,
+         .default_value = "roma3",
+         .choices = {"roma3", "peskin4"},
+         .meaning = "Regularised delta kernel: `roma3` (Roma, Peskin & Berger 1999; 3 points per direction) "
+                    "or `peskin4` (Peskin 2002; 4 points, smoother, thicker interface)."},
+        {.path = "numerics.ibm.forcing_iterations",
+         .type = K::integer,
+         .default_value = "3",
+         .min = at_least(1),
+         .max = at_most(50),
+         .meaning = "Multi-direct forcing iterations per step (Breugem 2012): each one shrinks the slip "
+                    "error at the markers."},
+        {.path = "numerics.ibm.marker_spacing",
+         .type = K::number,
+         .default_value = "1.0",
+         .min = at_least(0.3),
+         .max = at_most(2.0),
+         .meaning = "Distance between neighbouring markers, in grid cells (the smallest cell along the "
+                    "outline)."},
+        {.path = "numerics.ibm.retraction",
+         .type = K::number,
+         .default_value = "0.0",
+         .min = at_least(0.0),
+         .max = at_most(1.0),
+         .meaning = "Markers of closed outlines moved this many cells inside the surface, to offset the "
+                    "thickness of the diffuse interface (Breugem 2012 uses 0.3 for spheres)."},
+        {.path = "numerics.ibm.stress_probes",
+         .type = K::vector2,
+         .default_value = "[1.5, 2.5]",
+         .min = above(0),
+         .meaning = "Distances from the surface, in cells along the normal, of the two probes that sample "
+                    "pressure and velocity for the surface-stress force (extrapolated to the surface)."},
         {.path = "numerics.poisson", .type = K::section, .meaning = "Pressure Poisson solver."},
         {.path = "numerics.poisson.tolerance",
          .type = K::number,
@@ -313,7 +508,15 @@ std::vector<CaseKey> make_schema() {
 
 constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
 
-// The names a path segment stands for: a placeholder's values, or itself.
+// A body name: letters, digits, '_' and '-', starting with a letter.
+bool is_body_name(std::string_view s) {
+    if (s.empty() || !std::isalpha(static_cast<unsigned char>(s[0]))) return false;
+    return std::all_of(s.begin(), s.end(),
+                       [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'; });
+}
+
+// The names a path segment stands for: a placeholder's values, or itself. (`<body>` stands for any body
+// name and is matched by segment_matches.)
 std::vector<std::string_view> expand(std::string_view segment) {
     if (segment == "<axis>") return {"x", "y"};
     if (segment == "<side>") return {kSideNames.begin(), kSideNames.end()};
@@ -350,13 +553,17 @@ std::string indexed(std::string_view path, std::size_t i) {
 }
 
 // Does the concrete path ("boundaries.left.type") match the schema pattern ("boundaries.<side>.type")?
+bool segment_matches(std::string_view pattern, std::string_view name) {
+    if (pattern == "<body>") return is_body_name(name);
+    const auto names = expand(pattern);
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 bool matches(std::string_view pattern, std::string_view path) {
     const auto a = split(pattern), b = split(path);
     if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        const auto names = expand(a[i]);
-        if (std::find(names.begin(), names.end(), b[i]) == names.end()) return false;
-    }
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!segment_matches(a[i], b[i])) return false;
     return true;
 }
 
@@ -559,6 +766,9 @@ class Reader {
 
         for (int s = 0; s < 4; ++s) read_boundary(s, c.boundary[s]);
         check_boundaries(c);
+
+        read_ibm(c.ibm);
+        read_bodies(c);
 
         c.convection = to_enum<ConvectionScheme>("numerics.convection", choice("numerics.convection"),
                                                  {{"central", ConvectionScheme::central},
@@ -917,6 +1127,125 @@ class Reader {
                 fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " +
                                           component + " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
                                           fmt(b.velocity[normal]));
+        }
+    }
+
+    void read_ibm(IbmConfig& m) const {
+        m.kernel = to_enum<DeltaKernel>("numerics.ibm.kernel", choice("numerics.ibm.kernel"),
+                                        {{"roma3", DeltaKernel::roma3}, {"peskin4", DeltaKernel::peskin4}});
+        m.forcing_iterations = static_cast<int>(integer("numerics.ibm.forcing_iterations"));
+        m.marker_spacing = number("numerics.ibm.marker_spacing");
+        m.retraction = number("numerics.ibm.retraction");
+        m.stress_probes = vector2("numerics.ibm.stress_probes");
+        if (!(m.stress_probes[1] > m.stress_probes[0]))
+            fail("numerics.ibm.stress_probes", "the second distance must be greater than the first, got [" +
+                                                   fmt(m.stress_probes[0]) + ", " + fmt(m.stress_probes[1]) + "]");
+    }
+
+    void read_bodies(CaseConfig& c) const {
+        constexpr double deg = 3.14159265358979323846 / 180.0;
+        for (const std::string& p : instances("bodies.<body>")) {
+            BodyConfig b;
+            b.name = std::string(leaf_of(p));
+            b.shape = to_enum<BodyShape>(p + ".shape", choice(p + ".shape"),
+                                         {{"circle", BodyShape::circle},
+                                          {"rectangle", BodyShape::rectangle},
+                                          {"polygon", BodyShape::polygon},
+                                          {"plane", BodyShape::plane},
+                                          {"segment", BodyShape::segment}});
+            const bool closed = b.shape == BodyShape::circle || b.shape == BodyShape::rectangle ||
+                                b.shape == BodyShape::polygon;
+            std::vector<std::array<double, 2>> extent;  // points that must lie in the domain
+            const std::string where_key = p + (b.shape == BodyShape::plane     ? ".point"
+                                               : b.shape == BodyShape::segment ? ".from"
+                                               : b.shape == BodyShape::polygon ? ".vertices"
+                                                                               : ".centre");
+            double height = 0.0;
+            if (b.shape == BodyShape::circle || b.shape == BodyShape::rectangle) b.centre = vector2(p + ".centre");
+            if (b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon || b.shape == BodyShape::plane)
+                b.angle = number(p + ".angle") * deg;
+            switch (b.shape) {
+                case BodyShape::circle: {
+                    b.diameter = number(p + ".diameter");
+                    const double r = 0.5 * b.diameter;
+                    extent = {{b.centre[0] - r, b.centre[1] - r}, {b.centre[0] + r, b.centre[1] + r}};
+                    height = b.diameter;
+                    break;
+                }
+                case BodyShape::rectangle: {
+                    b.size = vector2(p + ".size");
+                    const double cs = std::cos(b.angle), sn = std::sin(b.angle);
+                    double ymin = 1e300, ymax = -1e300;
+                    for (const double sx : {-0.5, 0.5})
+                        for (const double sy : {-0.5, 0.5}) {
+                            const double x = sx * b.size[0], y = sy * b.size[1];
+                            extent.push_back({b.centre[0] + cs * x - sn * y, b.centre[1] + sn * x + cs * y});
+                            ymin = std::min(ymin, extent.back()[1]);
+                            ymax = std::max(ymax, extent.back()[1]);
+                        }
+                    height = ymax - ymin;
+                    break;
+                }
+                case BodyShape::polygon: {
+                    b.vertices = point_list(p + ".vertices");
+                    if (b.vertices.size() < 3)
+                        fail(p + ".vertices", "a polygon needs at least 3 corners, got " +
+                                                  std::to_string(b.vertices.size()));
+                    double a2 = 0.0, ymin = 1e300, ymax = -1e300;
+                    for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+                        const auto& v = b.vertices[k];
+                        const auto& w = b.vertices[(k + 1) % b.vertices.size()];
+                        a2 += v[0] * w[1] - v[1] * w[0];
+                        ymin = std::min(ymin, v[1]);
+                        ymax = std::max(ymax, v[1]);
+                    }
+                    if (std::abs(a2) < 1e-14) fail(p + ".vertices", "the corners enclose no area");
+                    extent = b.vertices;  // the rotation about the centroid is checked by the solver
+                    height = ymax - ymin;
+                    break;
+                }
+                case BodyShape::plane:
+                    b.point = vector2(p + ".point");
+                    extent = {b.point};
+                    break;
+                case BodyShape::segment:
+                    b.from = vector2(p + ".from");
+                    b.to = vector2(p + ".to");
+                    if (b.from == b.to) fail(p + ".to", "the two ends of the segment coincide");
+                    extent = {b.from, b.to};
+                    height = std::hypot(b.to[0] - b.from[0], b.to[1] - b.from[1]);
+                    break;
+            }
+            for (const auto& [x, y] : extent)
+                if (x < c.x.start || x > c.x.end || y < c.y.start || y > c.y.end)
+                    fail(where_key, "the body reaches outside the domain [" + fmt(c.x.start) + ", " + fmt(c.x.end) +
+                                        "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]: point [" + fmt(x) +
+                                        ", " + fmt(y) + "]");
+
+            const std::string m = p + ".motion";
+            b.motion.type = to_enum<MotionType>(m + ".type", choice(m + ".type"),
+                                                {{"fixed", MotionType::fixed},
+                                                 {"constant_velocity", MotionType::constant_velocity},
+                                                 {"oscillation", MotionType::oscillation},
+                                                 {"uniform_acceleration", MotionType::uniform_acceleration}});
+            if (!closed && b.motion.type != MotionType::fixed)
+                fail(m + ".type", "planes and segments are fixed; only circles, rectangles and polygons move");
+            b.motion.velocity = vector2(m + ".velocity");
+            b.motion.angular_velocity = number(m + ".angular_velocity");
+            b.motion.amplitude = vector2(m + ".amplitude");
+            b.motion.angular_amplitude = number(m + ".angular_amplitude") * deg;
+            if (present(m + ".frequency")) b.motion.frequency = number(m + ".frequency");
+            b.motion.phase = number(m + ".phase") * deg;
+            b.motion.acceleration = vector2(m + ".acceleration");
+            b.motion.angular_acceleration = number(m + ".angular_acceleration");
+
+            b.reference_velocity = number(p + ".reference.velocity");
+            if (present(p + ".reference.length")) b.reference_length = number(p + ".reference.length");
+            else if (b.shape == BodyShape::plane) b.reference_length = std::hypot(c.x.end - c.x.start, c.y.end - c.y.start);
+            else b.reference_length = height;
+            if (!(b.reference_length > 0.0))
+                fail(p + ".reference.length", "the default (the body's extent across x) is 0: give a length");
+            c.bodies.push_back(std::move(b));
         }
     }
 

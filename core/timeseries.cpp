@@ -52,8 +52,8 @@ bool parse_row(const std::string& line, std::size_t columns, std::vector<double>
 }  // namespace
 
 TimeSeries::TimeSeries(const Grid& grid, std::filesystem::path out_dir, std::vector<std::string> columns,
-                       double restart_time)
-    : root_(grid.rank() == 0), out_dir_(std::move(out_dir)), columns_(std::move(columns)) {
+                       double restart_time, std::string stem)
+    : root_(grid.rank() == 0), out_dir_(std::move(out_dir)), stem_(std::move(stem)), columns_(std::move(columns)) {
     if (columns_.empty()) throw std::invalid_argument("TimeSeries: no columns");
     if (!root_) return;
     std::filesystem::create_directories(out_dir_);

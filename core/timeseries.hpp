@@ -23,8 +23,9 @@ class TimeSeries {
     // short by a crash is dropped), rewrite the file with them atomically, and append after them; with no
     // existing file, start a new one. Throws std::runtime_error if the existing header differs from
     // `columns` (move the old file away to start a new series).
+    // `stem` names the files (stem.csv, stem.h5).
     TimeSeries(const Grid& grid, std::filesystem::path out_dir, std::vector<std::string> columns,
-               double restart_time = -1.0);
+               double restart_time = -1.0, std::string stem = "timeseries");
 
     // One CSV line, flushed. row.size() must equal the number of columns.
     void append(const std::vector<double>& row);
@@ -35,12 +36,13 @@ class TimeSeries {
 
     const std::vector<std::string>& columns() const { return columns_; }
     std::size_t rows() const { return rows_.size(); }  // 0 on ranks other than 0
-    std::filesystem::path csv_path() const { return out_dir_ / "timeseries.csv"; }
-    std::filesystem::path hdf5_path() const { return out_dir_ / "timeseries.h5"; }
+    std::filesystem::path csv_path() const { return out_dir_ / (stem_ + ".csv"); }
+    std::filesystem::path hdf5_path() const { return out_dir_ / (stem_ + ".h5"); }
 
   private:
     bool root_;
     std::filesystem::path out_dir_;
+    std::string stem_;
     std::vector<std::string> columns_;
     std::vector<std::vector<double>> rows_;
     std::ofstream csv_;

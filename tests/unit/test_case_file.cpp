@@ -448,5 +448,65 @@ TEST(CaseFile, DocExampleParses) {
     EXPECT_EQ(c.name, "cavity_re100");
 }
 
+// ---- immersed bodies ----
+
+TEST(CaseFile, BodiesReadBackWithUnitsConverted) {
+    const CaseConfig c = parse_case_text(kMinimal + R"(bodies:
+  block:
+    shape: rectangle
+    centre: [0.5, 0.6]
+    size: [0.2, 0.1]
+    angle: 90
+    motion: {type: oscillation, amplitude: [-0.1, 0], frequency: 2, phase: 90}
+  bed:
+    shape: plane
+    point: [0.5, 0.1]
+    angle: 30
+)");
+    ASSERT_EQ(c.bodies.size(), 2u);
+    // Sections are read in name order.
+    EXPECT_EQ(c.bodies[0].name, "bed");
+    EXPECT_EQ(c.bodies[0].shape, BodyShape::plane);
+    EXPECT_NEAR(c.bodies[0].angle, M_PI / 6, 1e-15);
+    const BodyConfig& b = c.bodies[1];
+    EXPECT_EQ(b.name, "block");
+    EXPECT_EQ(b.shape, BodyShape::rectangle);
+    EXPECT_NEAR(b.angle, M_PI / 2, 1e-15);
+    EXPECT_EQ(b.motion.type, MotionType::oscillation);
+    EXPECT_EQ(b.motion.amplitude[0], -0.1);
+    EXPECT_NEAR(b.motion.phase, M_PI / 2, 1e-15);
+    // Reference length defaults to the extent across x: the rotated rectangle is 0.2 high.
+    EXPECT_NEAR(b.reference_length, 0.2, 1e-12);
+    EXPECT_EQ(b.reference_velocity, 1.0);
+    EXPECT_EQ(c.ibm.kernel, DeltaKernel::roma3);
+    EXPECT_EQ(c.ibm.forcing_iterations, 3);
+}
+
+TEST(CaseFile, BodyErrorsNameTheKey) {
+    const std::string circle = "bodies:\n  cyl:\n    shape: circle\n    centre: [0.5, 0.5]\n    diameter: 0.2\n";
+    EXPECT_NO_THROW(parse_case_text(kMinimal + circle));
+    // A body that reaches outside the domain.
+    expect_message(error_of(kMinimal + circle, {"bodies.cyl.centre=[0.95, 0.5]"}),
+                   {"bodies.cyl.centre", "outside the domain", "point [1.05, "});
+    // A key of another shape.
+    expect_message(error_of(kMinimal + circle + "    size: [1, 1]\n"),
+                   {"bodies.cyl.size", "not used when shape is 'circle'"});
+    // A typo inside a body.
+    expect_message(error_of(kMinimal + circle + "    diametre: 0.2\n"),
+                   {"bodies.cyl.diametre", "unknown key", "did you mean 'bodies.cyl.diameter'"});
+    // A missing key.
+    expect_message(error_of(kMinimal + "bodies:\n  cyl:\n    shape: circle\n    centre: [0.5, 0.5]\n"),
+                   {"bodies.cyl.diameter", "missing required key"});
+    // A plane cannot move; an oscillation needs its frequency.
+    expect_message(error_of(kMinimal + "bodies:\n  bed: {shape: plane, point: [0.5, 0.1], motion: {type: "
+                                       "constant_velocity}}\n"),
+                   {"bodies.bed.motion.type", "planes and segments are fixed"});
+    expect_message(error_of(kMinimal + circle + "    motion: {type: oscillation}\n"),
+                   {"bodies.cyl.motion.frequency", "missing required key"});
+    expect_message(error_of(kMinimal + circle, {"numerics.ibm.stress_probes=[2, 1]"}),
+                   {"numerics.ibm.stress_probes", "second distance must be greater"});
+}
+
 }  // namespace
 }  // namespace chute
+

@@ -4,7 +4,7 @@ add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_lid_driven_cavity.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_poiseuille.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
-target_link_libraries(chute_validation_tests PRIVATE chute_core GTest::gtest)
+target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 # Runs a validation test on `ranks` MPI ranks.

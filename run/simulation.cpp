@@ -10,12 +10,14 @@
 #include <memory>
 #include <sstream>
 
+#include "body_series.hpp"
 #include "case_file.hpp"
 #include "checkpoint.hpp"
 #include "diagnostics.hpp"
 #include "field_output.hpp"
 #include "gather.hpp"
 #include "hdf5_file.hpp"
+#include "immersed_boundary.hpp"
 #include "stop_request.hpp"
 #include "timeseries.hpp"
 
@@ -60,12 +62,15 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     // Grid and decomposition problems found only now (the rank count is not in the case file) are case
     // errors too: same exit code, same kind of message, and nothing is written.
     std::unique_ptr<FlowSolver> solver_ptr;
+    std::unique_ptr<ImmersedBoundary> ibm_ptr;
     try {
         solver_ptr = std::make_unique<FlowSolver>(config, comm);
+        ibm_ptr = std::make_unique<ImmersedBoundary>(solver_ptr->grid(), config);
     } catch (const std::invalid_argument& e) {
         throw CaseError(e.what());
     }
     FlowSolver& solver = *solver_ptr;
+    ImmersedBoundary& bodies = *ibm_ptr;
 
     if (root) std::filesystem::create_directories(options.out_dir);
     MPI_Barrier(comm);
@@ -84,8 +89,10 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         const CheckpointHeader h = read_checkpoint(grid, *options.restart, checkpoint_fields(solver));
         solver.restore(h.step, h.time, h.dt_previous);
     }
+    bodies.move_to(solver.time());
 
     TimeSeries series(grid, options.out_dir, timeseries_columns(config), options.restart ? solver.time() : -1.0);
+    BodySeries body_series(grid, options.out_dir, bodies, config, options.restart ? solver.time() : -1.0);
     FieldOutput fields(grid, options.out_dir, options.restart ? solver.step() : -1);
     Probes probes(grid, config.probes);
     HaloExchange halo(grid);
@@ -122,6 +129,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             for (std::size_t k = 0; k < probes.size(); ++k) row.insert(row.end(), {pu[k], pv[k], pp[k]});
         }
         series.append(row);
+        if (!bodies.empty()) body_series.append(solver.time(), bodies.forces(solver.velocity(), solver.pressure()));
     };
 
     RunSummary summary;
@@ -152,7 +160,13 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         const double remaining = config.end_time - solver.time();
         if (dt >= remaining) dt = remaining;
         else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
-        const StepStats st = solver.advance(dt);
+        // One step: predict u*, force it to follow the bodies at t^{n+1}, project (DESIGN.md data flow).
+        solver.predict(dt);
+        if (!bodies.empty()) {
+            bodies.move_to(solver.time() + dt);
+            bodies.force(solver.predicted(), dt);
+        }
+        const StepStats st = solver.project();
 
         ke = kinetic_energy(grid, solver.velocity());
         div = max_divergence(grid, solver.velocity());
@@ -165,6 +179,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             msg << " (dt = " << st.dt << "; try a smaller numerics.cfl, a finer grid, or the van_leer scheme)."
                 << " Outputs written so far are kept in " << options.out_dir.string();
             series.write_hdf5();
+            body_series.write_hdf5();
             throw RunDiverged(msg.str());
         }
 
@@ -177,6 +192,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         if (solver.time() >= next_checkpoint_time - eps) {
             summary.last_checkpoint = write_checkpoint_now();
             series.write_hdf5();
+            body_series.write_hdf5();
             while (next_checkpoint_time <= solver.time() + eps) next_checkpoint_time += config.checkpoint_interval;
         }
         const double out_seconds = since(out_start);
@@ -214,6 +230,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     if (summary.steps > 0 || !options.restart) write_fields();
     summary.last_checkpoint = write_checkpoint_now();
     series.write_hdf5();
+    body_series.write_hdf5();
 
     summary.time = solver.time();
     summary.kinetic_energy = kinetic_energy(grid, solver.velocity());

@@ -1,0 +1,65 @@
+#pragma once
+// An immersed body: its outline (body frame), where it is and how it moves (world frame).
+//
+// World position of a body-frame point r:  X = x_c + R(theta) r;   its velocity U = U_c + omega perp(X - x_c).
+// x_c is the centre of area of a closed outline; planes and segments are static and live in the world frame.
+#include <string>
+
+#include "case_config.hpp"
+#include "outline.hpp"
+
+namespace chute {
+
+struct BodyState {
+    Vec2 centre = Vec2::Zero();
+    double angle = 0.0;
+    Vec2 velocity = Vec2::Zero();
+    double angular_velocity = 0.0;
+    Vec2 acceleration = Vec2::Zero();
+    double angular_acceleration = 0.0;
+};
+
+// Kinematics prescribed by the case file, as functions of time.
+class PrescribedMotion {
+public:
+    PrescribedMotion() = default;
+    PrescribedMotion(const MotionConfig& m, const Vec2& centre0, double angle0)
+        : m_(m), centre0_(centre0), angle0_(angle0) {}
+    BodyState at(double t) const;
+    bool moves() const { return m_.type != MotionType::fixed; }
+
+private:
+    MotionConfig m_;
+    Vec2 centre0_ = Vec2::Zero();
+    double angle0_ = 0.0;
+};
+
+class Body {
+public:
+    // Builds the outline of the case's body; `domain_min/max` clip planes to the domain.
+    Body(const BodyConfig& config, const Vec2& domain_min, const Vec2& domain_max);
+
+    const std::string& name() const { return config_.name; }
+    const BodyConfig& config() const { return config_; }
+    const Outline& outline() const { return outline_; }
+    const BodyState& state() const { return state_; }
+    bool moves() const { return motion_.moves(); }
+    // Places the body at time t (prescribed motion).
+    void move_to(double t) { state_ = motion_.at(t); }
+
+    Vec2 to_world(const Vec2& r) const { return state_.centre + rotated(r, state_.angle); }
+    Vec2 direction_to_world(const Vec2& d) const { return rotated(d, state_.angle); }
+    Vec2 velocity_at(const Vec2& X) const { return state_.velocity + state_.angular_velocity * perp(X - state_.centre); }
+    bool contains(const Vec2& X) const { return outline_.contains(rotated(X - state_.centre, -state_.angle)); }
+
+    double area() const { return outline_.area(); }
+    double polar_moment() const { return outline_.polar_moment(); }
+
+private:
+    BodyConfig config_;
+    Outline outline_;
+    PrescribedMotion motion_;
+    BodyState state_;
+};
+
+}  // namespace chute

@@ -1,0 +1,29 @@
+#pragma once
+// Regularised delta kernels phi(r), r the distance in grid spacings. The 2D kernel is phi(rx) phi(ry) / h^2.
+//
+//   roma3   (Roma, Peskin & Berger 1999, JCP 153:509), support |r| < 1.5: the default; 3 points per
+//           direction, the kernel of Uhlmann (2005) and Breugem (2012).
+//   peskin4 (Peskin 2002, Acta Numerica 11:479, eq. 6.27), support |r| < 2.
+// Both satisfy sum_k phi(r - k) = 1 and sum_k (r - k) phi(r - k) = 0 (exact interpolation of linear
+// fields on uniform grids).
+#include <cmath>
+
+#include "case_config.hpp"
+
+namespace chute {
+
+inline double kernel_support(DeltaKernel k) { return k == DeltaKernel::roma3 ? 1.5 : 2.0; }
+
+inline double delta_kernel(DeltaKernel k, double r) {
+    r = std::abs(r);
+    if (k == DeltaKernel::roma3) {
+        if (r <= 0.5) return (1.0 + std::sqrt(1.0 - 3.0 * r * r)) / 3.0;
+        if (r <= 1.5) return (5.0 - 3.0 * r - std::sqrt(1.0 - 3.0 * (1.0 - r) * (1.0 - r))) / 6.0;
+        return 0.0;
+    }
+    if (r <= 1.0) return (3.0 - 2.0 * r + std::sqrt(1.0 + 4.0 * r - 4.0 * r * r)) / 8.0;
+    if (r <= 2.0) return (5.0 - 2.0 * r - std::sqrt(-7.0 + 12.0 * r - 4.0 * r * r)) / 8.0;
+    return 0.0;
+}
+
+}  // namespace chute

@@ -1,0 +1,60 @@
+#pragma once
+// Direct forcing (Uhlmann 2005, JCP 209:448) with multi-direct forcing iterations (Breugem 2012, JCP
+// 231:4469; Luo et al. 2007), applied to the predicted velocity u* of the projection step:
+//
+//   repeat forcing_iterations times:
+//     U_l = I[u*](X_l)                      interpolate to every marker (regularised delta, euler_lagrange)
+//     F_l = (U_body(X_l) - U_l) / dt        the force per unit mass that gives the body velocity there
+//     u* += dt S[F_l dV_l]                  spread back; dV_l = marker length x local grid spacing
+//   the pressure projection follows (FlowSolver::project).
+//
+// The body is at its place at t^{n+1} when the forcing is applied. Each iteration shrinks the slip error
+// |U_l - U_body| left by the overlap of neighbouring kernels; the error after the last iteration is reported.
+// Momentum given to the fluid per unit density and depth: sum_l F_l dV_l (summed over the iterations).
+#include <vector>
+
+#include "body.hpp"
+#include "euler_lagrange.hpp"
+
+namespace chute {
+
+struct BodyForcing {
+    Vec2 momentum_rate = Vec2::Zero();  // sum_l F_l dV_l: force on the fluid / (rho depth)  (m^3/s^2)
+    double torque_rate = 0.0;           // sum_l (X_l - x_c) x F_l dV_l about the body centre  (m^4/s^2)
+    double max_slip = 0.0;              // max_l |U_l - U_body(X_l)| after forcing (m/s)
+    double rms_slip = 0.0;
+};
+
+class DirectForcing {
+public:
+    DirectForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies);
+
+    // Force u* (owned faces) towards the bodies' velocities at their present place.
+    void apply(Velocity& star, double dt);
+    const std::vector<BodyForcing>& forcing() const { return result_; }
+
+    // The markers of body b as placed for the last step: world positions and volumes.
+    std::size_t markers(std::size_t b) const { return ranges_[b + 1] - ranges_[b]; }
+    // Marker spacing used for body b (m).
+    double marker_spacing(std::size_t b) const { return spacing_[b]; }
+
+private:
+    void place_markers();
+
+    const Grid& grid_;
+    IbmConfig config_;
+    const std::vector<Body>& bodies_;
+    std::vector<double> spacing_;
+    std::vector<std::size_t> ranges_;    // markers of body b: [ranges_[b], ranges_[b+1])
+    std::vector<Marker> body_frame_;     // all markers, body frame (retraction applied)
+    std::vector<Vec2> world_;            // all markers, world frame
+    std::vector<double> volume_;         // dV_l
+    std::vector<Stencil> su_, sv_;
+    bool placed_ = false;
+    std::vector<BodyForcing> result_;
+};
+
+// The smallest grid spacing met along a body's outline (markers are spaced relative to it).
+double min_spacing_along(const Grid& grid, const Body& body);
+
+}  // namespace chute

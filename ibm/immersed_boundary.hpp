@@ -1,0 +1,47 @@
+#pragma once
+// The immersed bodies of a run and what the time step asks of them:
+//
+//   move_to(t^{n+1})                 prescribed motion
+//   force(u*, dt)                    direct forcing of the predicted velocity (direct_forcing)
+//   (projection)
+//   forces(u^{n+1}, p^{n+1/2})       hydrodynamic force and torque on each body, two independent ways:
+//     (a) from the forcing (Uhlmann 2005, eq. 23 and 28, rigid-body form of the internal fluid term):
+//           F = rho depth ( -sum_l F_l dV_l + A dU_c/dt ),   M = rho depth ( -sum_l r_l x F_l dV_l + J domega/dt )
+//         A the area and J the polar moment of area of the body: the fluid inside the outline moves with it;
+//     (b) from the stress on the surface, split into pressure and viscous parts (surface_stress).
+// Both refer to the step's mid-point in time: the forcing acts over the step and the pressure is p^{n+1/2}.
+#include <memory>
+#include <vector>
+
+#include "body.hpp"
+#include "direct_forcing.hpp"
+#include "surface_stress.hpp"
+
+namespace chute {
+
+struct BodyForces {
+    Vec2 forcing = Vec2::Zero();   // (a), N
+    double forcing_torque = 0.0;   // (a), N m
+    SurfaceForces surface;         // (b), N and N m
+    double max_slip = 0.0, rms_slip = 0.0;  // m/s after the forcing iterations
+};
+
+class ImmersedBoundary {
+public:
+    ImmersedBoundary(const Grid& grid, const CaseConfig& config);
+
+    bool empty() const { return bodies_.empty(); }
+    const std::vector<Body>& bodies() const { return bodies_; }
+    void move_to(double t);
+    void force(Velocity& star, double dt) { forcing_->apply(star, dt); }
+    std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p) const;
+    const DirectForcing& forcing() const { return *forcing_; }
+
+private:
+    const CaseConfig& config_;
+    std::vector<Body> bodies_;
+    std::unique_ptr<DirectForcing> forcing_;
+    std::vector<std::unique_ptr<SurfaceStress>> stress_;
+};
+
+}  // namespace chute

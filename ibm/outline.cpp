@@ -1,0 +1,138 @@
+#include "outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace chute {
+
+Outline Outline::circle(double diameter) {
+    if (!(diameter > 0.0)) throw std::invalid_argument("circle: diameter must be positive");
+    Outline o;
+    o.kind_ = Kind::circle;
+    o.radius_ = 0.5 * diameter;
+    return o;
+}
+
+Outline Outline::polygon(std::vector<Vec2> v, Vec2* centroid) {
+    if (v.size() < 3) throw std::invalid_argument("polygon: needs at least 3 vertices");
+    // Shoelace area and centroid.
+    double a2 = 0.0;
+    Vec2 c = Vec2::Zero();
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const Vec2& p = v[k];
+        const Vec2& q = v[(k + 1) % v.size()];
+        const double w = cross(p, q);
+        a2 += w;
+        c += w * (p + q);
+    }
+    if (std::abs(a2) < 1e-300) throw std::invalid_argument("polygon: vertices enclose no area");
+    c /= 3.0 * a2;
+    if (a2 < 0.0) std::reverse(v.begin(), v.end());  // counterclockwise: outward normal on the right
+    for (Vec2& p : v) p -= c;
+    if (centroid) *centroid = c;
+    Outline o;
+    o.kind_ = Kind::polygon;
+    o.vertices_ = std::move(v);
+    return o;
+}
+
+Outline Outline::rectangle(double width, double height) {
+    if (!(width > 0.0 && height > 0.0)) throw std::invalid_argument("rectangle: sides must be positive");
+    const double a = 0.5 * width, b = 0.5 * height;
+    return polygon({{-a, -b}, {a, -b}, {a, b}, {-a, b}});
+}
+
+Outline Outline::segment(const Vec2& a, const Vec2& b) {
+    if ((b - a).norm() <= 0.0) throw std::invalid_argument("segment: the two ends coincide");
+    Outline o;
+    o.kind_ = Kind::segment;
+    o.vertices_ = {a, b};
+    return o;
+}
+
+double Outline::perimeter() const {
+    if (kind_ == Kind::circle) return 2.0 * std::numbers::pi * radius_;
+    if (kind_ == Kind::segment) return (vertices_[1] - vertices_[0]).norm();
+    double s = 0.0;
+    for (std::size_t k = 0; k < vertices_.size(); ++k) s += (vertices_[(k + 1) % vertices_.size()] - vertices_[k]).norm();
+    return s;
+}
+
+double Outline::area() const {
+    if (kind_ == Kind::circle) return std::numbers::pi * radius_ * radius_;
+    if (kind_ == Kind::segment) return 0.0;
+    double a2 = 0.0;
+    for (std::size_t k = 0; k < vertices_.size(); ++k) a2 += cross(vertices_[k], vertices_[(k + 1) % vertices_.size()]);
+    return 0.5 * a2;
+}
+
+double Outline::polar_moment() const {
+    if (kind_ == Kind::circle) return 0.5 * std::numbers::pi * std::pow(radius_, 4);
+    if (kind_ == Kind::segment) return 0.0;
+    // Sum over the triangles (0, p, q): (Ix + Iy) = (1/12) sum w (p.p + p.q + q.q), w = p x q.
+    double j = 0.0;
+    for (std::size_t k = 0; k < vertices_.size(); ++k) {
+        const Vec2& p = vertices_[k];
+        const Vec2& q = vertices_[(k + 1) % vertices_.size()];
+        j += cross(p, q) * (p.dot(p) + p.dot(q) + q.dot(q));
+    }
+    return j / 12.0;
+}
+
+std::vector<Marker> Outline::markers(double spacing) const {
+    if (!(spacing > 0.0)) throw std::invalid_argument("markers: spacing must be positive");
+    std::vector<Marker> m;
+    if (kind_ == Kind::circle) {
+        const int n = std::max(8, static_cast<int>(std::ceil(perimeter() / spacing)));
+        const double ds = perimeter() / n;
+        for (int k = 0; k < n; ++k) {
+            const double t = 2.0 * std::numbers::pi * k / n;
+            const Vec2 normal(std::cos(t), std::sin(t));
+            m.push_back({radius_ * normal, normal, ds});
+        }
+        return m;
+    }
+    // Edges: markers at the midpoints of equal sub-segments, so none sits on a corner and each edge's
+    // length is shared exactly; the outward normal of a counterclockwise edge p -> q is on its right.
+    const std::size_t edges = kind_ == Kind::segment ? 1 : vertices_.size();
+    for (std::size_t k = 0; k < edges; ++k) {
+        const Vec2& p = vertices_[k];
+        const Vec2& q = vertices_[(k + 1) % vertices_.size()];
+        const double len = (q - p).norm();
+        const int n = std::max(1, static_cast<int>(std::ceil(len / spacing)));
+        const Vec2 t = (q - p) / len;
+        const Vec2 normal(t.y(), -t.x());
+        // A segment's solid is on its right, so its outward (fluid-side) normal is on its left.
+        const Vec2 out = kind_ == Kind::segment ? Vec2(-normal) : normal;
+        for (int s = 0; s < n; ++s) m.push_back({p + (s + 0.5) / n * (q - p), out, len / n});
+    }
+    return m;
+}
+
+bool Outline::contains(const Vec2& p) const { return signed_distance(p) < 0.0; }
+
+double Outline::signed_distance(const Vec2& p) const {
+    if (kind_ == Kind::circle) return p.norm() - radius_;
+    if (kind_ == Kind::segment) {
+        // Distance to the infinite line, negative on the solid (right) side.
+        const Vec2 t = (vertices_[1] - vertices_[0]).normalized();
+        return cross(t, p - vertices_[0]);
+    }
+    double d = std::numeric_limits<double>::infinity();
+    bool inside = false;
+    for (std::size_t k = 0, l = vertices_.size() - 1; k < vertices_.size(); l = k++) {
+        const Vec2& a = vertices_[l];
+        const Vec2& b = vertices_[k];
+        const Vec2 e = b - a;
+        const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        d = std::min(d, (p - a - s * e).norm());
+        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) / (b.y() - a.y()) * e.x())
+            inside = !inside;
+    }
+    return inside ? -d : d;
+}
+
+}  // namespace chute

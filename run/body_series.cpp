@@ -1,0 +1,69 @@
+#include "body_series.hpp"
+
+namespace chute {
+
+std::vector<std::string> BodySeries::columns() {
+    return {"t",           "x",           "y",           "angle",      "u",          "v",
+            "omega",       "ax",          "ay",          "alpha",      "fx_forcing", "fy_forcing",
+            "m_forcing",   "fx_pressure", "fy_pressure", "m_pressure", "fx_viscous", "fy_viscous",
+            "m_viscous",   "fx_surface",  "fy_surface",  "m_surface",  "cx_forcing", "cy_forcing",
+            "cx_pressure", "cy_pressure", "cx_viscous",  "cy_viscous", "cx_surface", "cy_surface",
+            "max_slip",    "rms_slip"};
+}
+
+BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const ImmersedBoundary& ibm,
+                       const CaseConfig& config, double restart_time)
+    : ibm_(ibm), config_(config) {
+    for (const Body& b : ibm.bodies())
+        series_.push_back(std::make_unique<TimeSeries>(grid, out_dir, columns(), restart_time, "body_" + b.name()));
+}
+
+void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
+    for (std::size_t k = 0; k < series_.size(); ++k) {
+        const Body& body = ibm_.bodies()[k];
+        const BodyState& s = body.state();
+        const BodyForces& f = forces[k];
+        const SurfaceForces& sf = f.surface;
+        const Vec2 surface = sf.pressure + sf.viscous;
+        const double U = body.config().reference_velocity, L = body.config().reference_length;
+        const double q = 0.5 * config_.density * U * U * L * config_.depth;  // force scale, N
+        series_[k]->append({t,
+                            s.centre.x(),
+                            s.centre.y(),
+                            s.angle,
+                            s.velocity.x(),
+                            s.velocity.y(),
+                            s.angular_velocity,
+                            s.acceleration.x(),
+                            s.acceleration.y(),
+                            s.angular_acceleration,
+                            f.forcing.x(),
+                            f.forcing.y(),
+                            f.forcing_torque,
+                            sf.pressure.x(),
+                            sf.pressure.y(),
+                            sf.pressure_torque,
+                            sf.viscous.x(),
+                            sf.viscous.y(),
+                            sf.viscous_torque,
+                            surface.x(),
+                            surface.y(),
+                            sf.pressure_torque + sf.viscous_torque,
+                            f.forcing.x() / q,
+                            f.forcing.y() / q,
+                            sf.pressure.x() / q,
+                            sf.pressure.y() / q,
+                            sf.viscous.x() / q,
+                            sf.viscous.y() / q,
+                            surface.x() / q,
+                            surface.y() / q,
+                            f.max_slip,
+                            f.rms_slip});
+    }
+}
+
+void BodySeries::write_hdf5() {
+    for (auto& s : series_) s->write_hdf5();
+}
+
+}  // namespace chute

@@ -1,0 +1,35 @@
+#pragma once
+// One time series per immersed body: out_dir/body_<name>.csv and .h5 (written like timeseries.csv).
+//
+// Columns (SI units; angles in rad; forces on the body in N for the case's depth, torques in N m about
+// the body's centre; coefficients C = F / (0.5 rho U^2 L depth) with the body's reference U and L):
+//   t, x, y, angle, u, v, omega, ax, ay, alpha                      kinematics of the centre
+//   fx_forcing, fy_forcing, m_forcing                                (a) from the forcing sum
+//   fx_pressure, fy_pressure, m_pressure, fx_viscous, fy_viscous, m_viscous,
+//   fx_surface, fy_surface, m_surface                                (b) surface stress, by kind and total
+//   cx_forcing, cy_forcing, cx_pressure, cy_pressure, cx_viscous, cy_viscous, cx_surface, cy_surface
+//   max_slip, rms_slip                                               no-slip error at the markers (m/s)
+#include <memory>
+#include <vector>
+
+#include "immersed_boundary.hpp"
+#include "timeseries.hpp"
+
+namespace chute {
+
+class BodySeries {
+public:
+    BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const ImmersedBoundary& ibm,
+               const CaseConfig& config, double restart_time);
+    void append(double t, const std::vector<BodyForces>& forces);
+    void write_hdf5();
+
+    static std::vector<std::string> columns();
+
+private:
+    const ImmersedBoundary& ibm_;
+    const CaseConfig& config_;
+    std::vector<std::unique_ptr<TimeSeries>> series_;
+};
+
+}  // namespace chute

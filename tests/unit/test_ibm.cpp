@@ -1,0 +1,148 @@
+// Pieces of the immersed boundary: delta kernels, outlines, Euler-Lagrange transfers, prescribed motion.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "body.hpp"
+#include "delta_kernel.hpp"
+#include "euler_lagrange.hpp"
+#include "outline.hpp"
+
+using namespace chute;
+
+TEST(DeltaKernel, PartitionOfUnityAndZeroFirstMoment) {
+    // Roma et al. (1999) and Peskin (2002) kernels: sum_k phi(r - k) = 1, sum_k (r - k) phi(r - k) = 0.
+    for (DeltaKernel k : {DeltaKernel::roma3, DeltaKernel::peskin4})
+        for (double r = 0.0; r < 1.0; r += 0.037) {
+            double s0 = 0.0, s1 = 0.0;
+            for (int j = -3; j <= 3; ++j) {
+                s0 += delta_kernel(k, r - j);
+                s1 += (r - j) * delta_kernel(k, r - j);
+            }
+            EXPECT_NEAR(s0, 1.0, 1e-14);
+            EXPECT_NEAR(s1, 0.0, 1e-14);
+        }
+    EXPECT_EQ(delta_kernel(DeltaKernel::roma3, 1.5), 0.0);
+    EXPECT_EQ(delta_kernel(DeltaKernel::peskin4, 2.0), 0.0);
+}
+
+TEST(Outline, AreaMomentPerimeterAndMarkers) {
+    const Outline square = Outline::rectangle(2.0, 2.0);
+    EXPECT_NEAR(square.area(), 4.0, 1e-14);
+    EXPECT_NEAR(square.polar_moment(), 2.0 * 2.0 * (4.0 + 4.0) / 12.0, 1e-14);  // b h (b^2 + h^2) / 12
+    const Outline circle = Outline::circle(2.0);
+    EXPECT_NEAR(circle.polar_moment(), std::numbers::pi / 2.0, 1e-14);
+    for (const Outline* o : {&square, &circle}) {
+        const auto markers = o->markers(0.1);
+        double length = 0.0;
+        Vec2 closure = Vec2::Zero();  // a closed outline: sum n ds = 0
+        for (const Marker& m : markers) {
+            length += m.length;
+            closure += m.normal * m.length;
+            // Normals point out: a step along the normal leaves the solid.
+            EXPECT_FALSE(o->contains(m.position + 0.01 * m.normal));
+            EXPECT_TRUE(o->contains(m.position - 0.01 * m.normal));
+            if (m.length > 0.1 + 1e-12) ADD_FAILURE() << "marker spacing " << m.length;
+        }
+        EXPECT_NEAR(length, o->perimeter(), 1e-12);
+        EXPECT_LT(closure.norm(), 1e-12);
+    }
+    // A polygon is recentred on its centroid and made counterclockwise.
+    Vec2 centroid;
+    const Outline tri = Outline::polygon({{0, 0}, {0, 3}, {3, 0}}, &centroid);
+    EXPECT_NEAR(centroid.x(), 1.0, 1e-14);
+    EXPECT_NEAR(centroid.y(), 1.0, 1e-14);
+    EXPECT_NEAR(tri.area(), 4.5, 1e-14);
+    // A segment: solid on the right of from -> to.
+    const Outline bed = Outline::segment({0, 0}, {1, 0});
+    EXPECT_TRUE(bed.contains({0.5, -0.1}));
+    EXPECT_FALSE(bed.contains({0.5, 0.1}));
+    EXPECT_GT(bed.markers(0.1).front().normal.y(), 0.99);
+}
+
+TEST(PrescribedMotion, VelocityAndAccelerationAreDerivativesOfPosition) {
+    for (MotionType type : {MotionType::constant_velocity, MotionType::oscillation, MotionType::uniform_acceleration}) {
+        MotionConfig m;
+        m.type = type;
+        m.velocity = {0.3, -0.2};
+        m.angular_velocity = 0.7;
+        m.amplitude = {0.1, 0.05};
+        m.angular_amplitude = 0.2;
+        m.frequency = 1.3;
+        m.phase = 0.4;
+        m.acceleration = {1.5, -0.5};
+        m.angular_acceleration = 2.0;
+        const PrescribedMotion motion(m, {1.0, 2.0}, 0.1);
+        const double t = 0.37, e = 1e-5;
+        const BodyState a = motion.at(t - e), s = motion.at(t), b = motion.at(t + e);
+        EXPECT_LT(((b.centre - a.centre) / (2 * e) - s.velocity).norm(), 1e-8);
+        EXPECT_LT(((b.velocity - a.velocity) / (2 * e) - s.acceleration).norm(), 1e-7);
+        EXPECT_NEAR((b.angle - a.angle) / (2 * e), s.angular_velocity, 1e-8);
+        EXPECT_NEAR((b.angular_velocity - a.angular_velocity) / (2 * e), s.angular_acceleration, 1e-7);
+    }
+    MotionConfig rest;
+    rest.type = MotionType::uniform_acceleration;
+    rest.acceleration = {1.0, 0.0};
+    const BodyState s0 = PrescribedMotion(rest, {0, 0}, 0).at(0.0);
+    EXPECT_EQ(s0.velocity.norm(), 0.0);  // from rest
+}
+
+namespace {
+Grid stretched_grid(MPI_Comm comm) {
+    return Grid(Axis(tanh_lines(0.0, 1.0, 40, 1.5), false), Axis(uniform_lines(0.0, 0.8, 32), false), comm);
+}
+}  // namespace
+
+TEST(EulerLagrange, InterpolatesLinearFieldsExactlyOnUniformGrids) {
+    Grid grid(Axis(uniform_lines(0.0, 1.0, 32), false), Axis(uniform_lines(0.0, 1.0, 32), false), MPI_COMM_SELF);
+    Velocity vel(grid);
+    for (int j = -kGhost; j < grid.ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid.nx() + kGhost; ++i) {
+            vel.u(i, j) = 1.0 + 2.0 * grid.lx().f(i) - 3.0 * grid.ly().c(j);
+            vel.v(i, j) = -0.5 + 0.7 * grid.lx().c(i) + 0.2 * grid.ly().f(j);
+        }
+    std::vector<Vec2> points = {{0.5, 0.5}, {0.31, 0.77}, {0.123, 0.456}};
+    for (DeltaKernel k : {DeltaKernel::roma3, DeltaKernel::peskin4}) {
+        const auto su = delta_stencils(grid, k, Staggering::u_face, points);
+        const auto sv = delta_stencils(grid, k, Staggering::v_face, points);
+        const auto U = interpolate_velocity(grid, su, sv, vel);
+        for (std::size_t l = 0; l < points.size(); ++l) {
+            EXPECT_NEAR(U[l].x(), 1.0 + 2.0 * points[l].x() - 3.0 * points[l].y(), 1e-13);
+            EXPECT_NEAR(U[l].y(), -0.5 + 0.7 * points[l].x() + 0.2 * points[l].y(), 1e-13);
+        }
+    }
+}
+
+TEST(EulerLagrange, SpreadingConservesMomentumAndIsAdjointToInterpolation) {
+    // On a stretched grid, also near a wall where the stencil is cut: sum_x V(x) du(x) = sum_X A(X), and
+    // <I u, A> = <u, S A>_V (the transfer does no work of its own).
+    const Grid grid = stretched_grid(MPI_COMM_SELF);
+    std::vector<Vec2> points = {{0.5, 0.4}, {0.02, 0.3}, {0.7, 0.79}};
+    const std::vector<double> amounts = {1.0, -2.0, 0.5};
+    const auto st = delta_stencils(grid, DeltaKernel::roma3, Staggering::u_face, points);
+    Field2D f(grid), g(grid);
+    spread(st, amounts, f);
+    double momentum = 0.0;
+    for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 0; i < grid.nx(); ++i) momentum += f(i, j) * grid.lx().dc(i) * grid.ly().w(j);
+    EXPECT_NEAR(momentum, 1.0 - 2.0 + 0.5, 1e-13);
+    for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 0; i < grid.nx(); ++i) g(i, j) = std::sin(3.0 * grid.lx().f(i)) + grid.ly().c(j);
+    const auto I = interpolate(grid, st, g);
+    double lhs = 0.0, rhs = 0.0;
+    for (std::size_t l = 0; l < points.size(); ++l) lhs += I[l] * amounts[l];
+    for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 1; i < grid.nx(); ++i) rhs += g(i, j) * f(i, j) * grid.lx().dc(i) * grid.ly().w(j);
+    EXPECT_NEAR(lhs, rhs, 1e-12);
+}
+
+TEST(EulerLagrange, BilinearSamplesLinearFields) {
+    const Grid grid = stretched_grid(MPI_COMM_SELF);
+    Field2D p(grid);
+    for (int j = -kGhost; j < grid.ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid.nx() + kGhost; ++i) p(i, j) = 2.0 * grid.lx().c(i) - grid.ly().c(j);
+    const std::vector<Vec2> points = {{0.5, 0.4}, {0.2, 0.1}, {0.9, 0.6}};
+    const auto v = interpolate(grid, bilinear_stencils(grid, Staggering::cell, points), p);
+    for (std::size_t l = 0; l < points.size(); ++l) EXPECT_NEAR(v[l], 2.0 * points[l].x() - points[l].y(), 1e-13);
+}
