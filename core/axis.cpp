@@ -54,4 +54,41 @@ std::vector<double> geometric_lines(double start, double end, int cells, double 
     return x;
 }
 
+namespace {
+// Widths growing by `ratio` from h * ratio until they span `length`, then scaled to span it exactly.
+std::vector<double> growing_widths(double length, double h, double ratio) {
+    std::vector<double> w;
+    double sum = 0.0;
+    for (double width = h * ratio; sum < length * (1.0 - 1e-12); width *= ratio) {
+        w.push_back(width);
+        sum += width;
+    }
+    // Drop a last sliver cell rather than squeeze the others.
+    if (w.size() > 1 && sum - length > 0.5 * w.back()) {
+        sum -= w.back();
+        w.pop_back();
+    }
+    for (double& x : w) x *= length / sum;
+    return w;
+}
+}  // namespace
+
+std::vector<double> clustered_lines(double start, double end, double core_start, double core_end, int core_cells,
+                                    double ratio) {
+    const double h = (core_end - core_start) / core_cells;
+    std::vector<double> x;
+    const auto below = core_start > start ? growing_widths(core_start - start, h, ratio) : std::vector<double>{};
+    const auto above = end > core_end ? growing_widths(end - core_end, h, ratio) : std::vector<double>{};
+    double pos = start;
+    x.push_back(pos);
+    for (auto it = below.rbegin(); it != below.rend(); ++it) x.push_back(pos += *it);
+    x.back() = core_start;
+    for (int k = 1; k <= core_cells; ++k) x.push_back(core_start + h * k);
+    x.back() = core_end;
+    pos = core_end;
+    for (double w : above) x.push_back(pos += w);
+    x.back() = end;
+    return x;
+}
+
 }  // namespace chute

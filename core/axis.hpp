@@ -40,5 +40,10 @@ std::vector<double> uniform_lines(double start, double end, int cells);
 std::vector<double> tanh_lines(double start, double end, int cells, double beta);
 // Lines growing geometrically from the start by `ratio` per cell.
 std::vector<double> geometric_lines(double start, double end, int cells, double ratio);
+// Uniform cells of width (core_end - core_start) / core_cells on [core_start, core_end], growing by `ratio`
+// per cell from there to start and to end (the outer cells scaled slightly to fit): a fine window around a
+// body, coarse far away.
+std::vector<double> clustered_lines(double start, double end, double core_start, double core_end, int core_cells,
+                                    double ratio);
 
 }  // namespace chute

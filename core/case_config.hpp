@@ -11,10 +11,12 @@ namespace chute {
 struct AxisConfig {
     double start = 0.0, end = 1.0;
     int cells = 32;
-    std::string spacing = "uniform";  // uniform | tanh | geometric | lines
+    std::string spacing = "uniform";  // uniform | tanh | geometric | clustered | lines
     double beta = 2.0;                // tanh clustering strength
     double ratio = 1.05;              // geometric growth ratio
     std::vector<double> lines;        // explicit lines (spacing: lines)
+    std::array<double, 2> core{0.0, 0.0};  // clustered: the uniform window
+    int core_cells = 0;                    // clustered: cells in the window
 };
 
 enum class BoundaryType { wall, slip, inflow, outflow, periodic };
@@ -62,7 +64,7 @@ struct IbmConfig {
     DeltaKernel kernel = DeltaKernel::roma3;
     int forcing_iterations = 3;              // multi-direct forcing (Breugem 2012)
     double marker_spacing = 1.0;             // in grid cells
-    double retraction = 0.0;                 // markers moved inwards by this many cells
+    double retraction = 0.3;                 // markers moved inwards by this many cells
     std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
 };
 

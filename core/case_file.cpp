@@ -12,6 +12,8 @@
 //      several keys (end > start, periodic pairs, wall velocity tangential, probes inside, ...).
 #include "case_file.hpp"
 
+#include "axis.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -36,7 +38,7 @@ constexpr Bound at_most(double v) { return {v, true}; }
 
 std::vector<CaseKey> make_schema() {
     using K = KeyType;
-    const std::vector<std::string_view> from_ends = {"uniform", "tanh", "geometric"};
+    const std::vector<std::string_view> from_ends = {"uniform", "tanh", "geometric", "clustered"};
     return {
         {.path = "name",
          .type = K::string,
@@ -68,14 +70,16 @@ std::vector<CaseKey> make_schema() {
          .required = true,
          .min = at_least(2),
          .when_key = "spacing",
-         .when_values = from_ends,
+         .when_values = {"uniform", "tanh", "geometric"},
          .meaning = "Number of cells."},
         {.path = "domain.<axis>.spacing",
          .type = K::choice,
          .default_value = "uniform",
-         .choices = {"uniform", "tanh", "geometric", "lines"},
+         .choices = {"uniform", "tanh", "geometric", "clustered", "lines"},
          .meaning = "Placement of the lines: `uniform`; `tanh`, clustered towards both ends; `geometric`, "
-                    "each cell `ratio` times as wide as the one before; `lines`, listed one by one."},
+                    "each cell `ratio` times as wide as the one before; `clustered`, uniform cells in the "
+                    "window `core` growing by `ratio` per cell towards both ends (a fine window around a "
+                    "body; the cell count follows); `lines`, listed one by one."},
         {.path = "domain.<axis>.beta",
          .type = K::number,
          .default_value = "2.0",
@@ -89,8 +93,23 @@ std::vector<CaseKey> make_schema() {
          .default_value = "1.05",
          .min = above(0),
          .when_key = "spacing",
-         .when_values = {"geometric"},
-         .meaning = "Width of each cell over the width of the one before it (geometric spacing)."},
+         .when_values = {"geometric", "clustered"},
+         .meaning = "Width of each cell over the width of the one before it (geometric spacing; clustered "
+                    "spacing outside the window)."},
+        {.path = "domain.<axis>.core",
+         .type = K::vector2,
+         .required = true,
+         .when_key = "spacing",
+         .when_values = {"clustered"},
+         .units = "m",
+         .meaning = "The window [from, to] of uniform fine cells; inside [start, end]."},
+        {.path = "domain.<axis>.core_cells",
+         .type = K::integer,
+         .required = true,
+         .min = at_least(2),
+         .when_key = "spacing",
+         .when_values = {"clustered"},
+         .meaning = "Number of cells across the window."},
         {.path = "domain.<axis>.lines",
          .type = K::number_list,
          .required = true,
@@ -412,11 +431,12 @@ std::vector<CaseKey> make_schema() {
                     "outline)."},
         {.path = "numerics.ibm.retraction",
          .type = K::number,
-         .default_value = "0.0",
+         .default_value = "0.3",
          .min = at_least(0.0),
          .max = at_most(1.0),
          .meaning = "Markers of closed outlines moved this many cells inside the surface, to offset the "
-                    "thickness of the diffuse interface (Breugem 2012 uses 0.3 for spheres)."},
+                    "thickness of the diffuse interface (Breugem 2012, 0.3 with the roma3 kernel). 0.3 puts the DFG 2D-1 "
+                    "drag in the published band at 40 cells per diameter (docs/validation.md)."},
         {.path = "numerics.ibm.stress_probes",
          .type = K::vector2,
          .default_value = "[1.5, 2.5]",
@@ -1088,7 +1108,17 @@ class Reader {
             if (!(a.end > a.start))
                 fail(p + ".end",
                      "must be greater than " + p + ".start (" + fmt(a.start) + "), got " + fmt(a.end));
-            a.cells = static_cast<int>(integer(p + ".cells"));
+            if (a.spacing == "clustered") {
+                a.core = vector2(p + ".core");
+                a.core_cells = static_cast<int>(integer(p + ".core_cells"));
+                if (!(a.core[0] >= a.start && a.core[1] <= a.end && a.core[1] > a.core[0]))
+                    fail(p + ".core", "the window must lie in [start, end] = [" + fmt(a.start) + ", " + fmt(a.end) +
+                                          "] with to > from, got [" + fmt(a.core[0]) + ", " + fmt(a.core[1]) + "]");
+                if (!(a.ratio >= 1.0)) fail(p + ".ratio", "clustered cells grow away from the window: ratio >= 1, got " + fmt(a.ratio));
+                a.cells = static_cast<int>(clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio).size()) - 1;
+            } else {
+                a.cells = static_cast<int>(integer(p + ".cells"));
+            }
         }
     }
 

@@ -1,6 +1,8 @@
 #include "direct_forcing.hpp"
 
 #include <algorithm>
+#include <mpi.h>
+
 #include <cmath>
 
 namespace chute {
@@ -47,7 +49,65 @@ void DirectForcing::place_markers() {
         }
     su_ = delta_stencils(grid_, config_.kernel, Staggering::u_face, world_);
     sv_ = delta_stencils(grid_, config_.kernel, Staggering::v_face, world_);
+    find_interior_faces();
     placed_ = true;
+}
+
+void DirectForcing::find_interior_faces() {
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    interior_.assign(bodies_.size(), {});
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        if (!body.outline().closed()) continue;
+        const double depth = (kernel_support(config_.kernel) + config_.retraction) * spacing_[b] / config_.marker_spacing;
+        // Owned faces in the body's bounding box only.
+        const double reach = body.outline().is_circle()
+                                 ? body.outline().radius()
+                                 : std::max_element(body.outline().vertices().begin(), body.outline().vertices().end(),
+                                                    [](const Vec2& a, const Vec2& c) { return a.norm() < c.norm(); })
+                                       ->norm();
+        const Vec2 c = body.state().centre;
+        auto range = [](const LocalAxis& a, int n, double lo, double hi) {
+            int first = 0, last = n - 1;
+            while (first < n && a.f(first + 1) < lo) ++first;
+            while (last >= 0 && a.f(last) > hi) --last;
+            return std::pair{first, last};
+        };
+        const auto [i0, i1] = range(X, nx, c.x() - reach, c.x() + reach);
+        const auto [j0, j1] = range(Y, ny, c.y() - reach, c.y() + reach);
+        auto inside = [&](const Vec2& p) {
+            return body.outline().signed_distance(rotated(p - c, -body.state().angle)) < -depth;
+        };
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const Vec2 pu(X.f(i), Y.c(j)), pv(X.c(i), Y.f(j));
+                if (inside(pu)) interior_[b].push_back({i, j, true, X.dc(i) * Y.w(j), pu});
+                if (inside(pv)) interior_[b].push_back({i, j, false, X.w(i) * Y.dc(j), pv});
+            }
+    }
+}
+
+void DirectForcing::force_interior(Velocity& star, double dt) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        double sums[3] = {0.0, 0.0, 0.0};  // momentum rate x, y and torque rate of this rank's faces
+        const Vec2 c = bodies_[b].state().centre;
+        for (const InteriorFace& f : interior_[b]) {
+            const Vec2 U = bodies_[b].velocity_at(f.position);
+            double& value = f.is_u ? star.u(f.i, f.j) : star.v(f.i, f.j);
+            const double target = f.is_u ? U.x() : U.y();
+            const double rate = (target - value) * f.volume / dt;
+            value = target;
+            const Vec2 m = f.is_u ? Vec2(rate, 0.0) : Vec2(0.0, rate);
+            sums[0] += m.x();
+            sums[1] += m.y();
+            sums[2] += cross(f.position - c, m);
+        }
+        if (grid_.size() > 1) MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, grid_.comm());
+        result_[b].momentum_rate += Vec2(sums[0], sums[1]);
+        result_[b].torque_rate += sums[2];
+    }
 }
 
 void DirectForcing::apply(Velocity& star, double dt) {
@@ -57,6 +117,9 @@ void DirectForcing::apply(Velocity& star, double dt) {
     std::vector<Vec2> target(n), force_sum(n, Vec2::Zero());
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         for (std::size_t l = ranges_[b]; l < ranges_[b + 1]; ++l) target[l] = bodies_[b].velocity_at(world_[l]);
+
+    for (BodyForcing& r : result_) r = BodyForcing{};
+    force_interior(star, dt);
 
     std::vector<double> du(n), dv(n);
     for (int it = 0; it < config_.forcing_iterations; ++it) {
@@ -73,7 +136,7 @@ void DirectForcing::apply(Velocity& star, double dt) {
 
     const std::vector<Vec2> U = interpolate_velocity(grid_, su_, sv_, star);
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        BodyForcing r;
+        BodyForcing& r = result_[b];
         double sq = 0.0;
         for (std::size_t l = ranges_[b]; l < ranges_[b + 1]; ++l) {
             const Vec2 f = force_sum[l] * volume_[l];
@@ -85,7 +148,6 @@ void DirectForcing::apply(Velocity& star, double dt) {
         }
         const std::size_t count = ranges_[b + 1] - ranges_[b];
         r.rms_slip = count ? std::sqrt(sq / count) : 0.0;
-        result_[b] = r;
     }
 }
 

@@ -36,6 +36,7 @@ public:
     void force(Velocity& star, double dt) { forcing_->apply(star, dt); }
     std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p) const;
     const DirectForcing& forcing() const { return *forcing_; }
+    const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 
 private:
     const CaseConfig& config_;

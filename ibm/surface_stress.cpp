@@ -38,12 +38,14 @@ SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, doub
     const std::vector<Vec2> U1 = interpolate_velocity(grid_, u1_, v1_, vel);
     const std::vector<Vec2> U2 = interpolate_velocity(grid_, u2_, v2_, vel);
     SurfaceForces f;
+    wall_pressure_.resize(markers_.size());
     const double d1 = d_[0], d2 = d_[1];
     for (std::size_t l = 0; l < markers_.size(); ++l) {
         const double ds = markers_[l].length * depth;
         const Vec2& n = normal_[l];
         const Vec2 t = perp(n);
         const double p_wall = density * (P1[l] - d1 * (P2[l] - P1[l]) / (d2 - d1));
+        wall_pressure_[l] = p_wall;
         const double h = h_[l];
         const double w1 = (U1[l] - body_.velocity_at(probe1_[l])).dot(t);
         const double w2 = (U2[l] - body_.velocity_at(probe2_[l])).dot(t);

@@ -29,6 +29,9 @@ public:
     SurfaceStress(const Grid& grid, const IbmConfig& config, const Body& body, double marker_spacing);
     // p is the kinematic pressure (p / rho), as FlowSolver holds it.
     SurfaceForces compute(const Velocity& vel, const Field2D& p, double density, double viscosity, double depth);
+    // From the last compute(): the surface points (world frame) and the pressure extrapolated to them (Pa).
+    const std::vector<Vec2>& points() const { return world_; }
+    const std::vector<double>& wall_pressure() const { return wall_pressure_; }
 
 private:
     void place();
@@ -38,7 +41,7 @@ private:
     std::array<double, 2> d_;
     std::vector<Marker> markers_;              // body frame, on the surface
     std::vector<Vec2> world_, normal_, probe1_, probe2_;
-    std::vector<double> h_;
+    std::vector<double> h_, wall_pressure_;
     std::vector<Stencil> p1_, p2_, u1_, u2_, v1_, v2_;
     bool placed_ = false;
 };

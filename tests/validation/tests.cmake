@@ -3,6 +3,8 @@
 add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_lid_driven_cavity.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_poiseuille.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_fixed_bodies.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_moving_bodies.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -24,3 +26,10 @@ chute_validation(poiseuille_zero_stress Poiseuille.ZeroStressOutflowGivesTheExac
 chute_validation(cavity_re1000_128_van_leer Cavity.Re1000Grid128VanLeer 2 "validation")
 chute_validation(cavity_re1000_128_koren Cavity.Re1000Grid128Koren 2 "validation")
 chute_validation(cavity_re1000_256 Cavity.Re1000Grid256 2 "validation;slow")
+
+# Immersed bodies
+chute_validation(dfg_2d1 FixedBodies.SchaeferTurek2D1 2 "validation")
+chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "validation;slow")
+chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
+chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
+chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnInclinedPlane 2 "validation")
