@@ -151,7 +151,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     const double start_time = solver.time();
     double t_momentum = 0, t_poisson = 0, t_correction = 0, t_output = 0, iterations = 0;
     summary.seconds_per_step_min = std::numeric_limits<double>::infinity();
-    double ke = 0.0, div = 0.0;
+    double ke = 0.0, div = 0.0, first_dt = 0.0;
 
     while (solver.time() < config.end_time - eps && (config.max_steps < 0 || summary.steps < config.max_steps)) {
         const auto step_start = clock::now();
@@ -170,10 +170,15 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
 
         ke = kinetic_energy(grid, solver.velocity());
         div = max_divergence(grid, solver.velocity());
-        if (!std::isfinite(ke) || !std::isfinite(div) || div * st.dt > config.divergence_limit) {
+        // A blow-up also shows as a time step that collapses (the CFL limit follows the growing speed).
+        if (first_dt == 0.0) first_dt = st.dt;
+        const bool dt_collapsed = !config.fixed_dt && st.dt < 1e-6 * first_dt;
+        if (!std::isfinite(ke) || !std::isfinite(div) || div * st.dt > config.divergence_limit || dt_collapsed) {
             std::ostringstream msg;
             msg << "run diverged at step " << solver.step() << ", t = " << solver.time() << ": ";
             if (!std::isfinite(ke)) msg << "kinetic energy is " << ke;
+            else if (dt_collapsed) msg << "the time step fell to " << st.dt << " s, a millionth of the first step's "
+                                       << first_dt << " s (the velocity is blowing up)";
             else msg << "max |div u| dt = " << div * st.dt << " exceeds numerics.divergence_limit = "
                      << config.divergence_limit;
             msg << " (dt = " << st.dt << "; try a smaller numerics.cfl, a finer grid, or the van_leer scheme)."

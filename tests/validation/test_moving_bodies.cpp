@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "body_run.hpp"
+#include "diagnostics.hpp"
 #include "euler_lagrange.hpp"
 
 using namespace chute;
@@ -81,38 +82,30 @@ TEST(MovingBodies, AddedMassOfSquareAlongDiagonal) {
     EXPECT_NEAR(r.ca_surface, 1.1885, 0.05 * 1.1885);
 }
 
-// Uniform flow U along a plane inclined at 30 degrees: no flow may cross the plane. Domain [0, 4] x [0, 2.5],
-// plane through (2, 1) rising to the right, solid below; inflow U (cos 30, sin 30) on the left and bottom,
-// zero-stress outflow on the right and top; Re = U L / nu = 1000, h = 1/32. After 3 flow-throughs the
-// net flux through the outline, |sum (u . n) ds|, and the flux of |u . n|, must be below 0.5 % of U times the
-// plane's length: the forcing leaves a slip of ~1e-3 U at the markers after the projection.
-TEST(MovingBodies, NoFlowThroughAnInclinedPlane) {
-    const double U = 1.0, angle = 30.0 * std::numbers::pi / 180.0;
-    const std::array<double, 2> inflow = {U * std::cos(angle), U * std::sin(angle)};
-    CaseConfig c;
-    c.x = AxisConfig{0.0, 4.0, 128, "uniform", 2.0, 1.05, {}};
-    c.y = AxisConfig{0.0, 2.5, 80, "uniform", 2.0, 1.05, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, inflow, InflowProfile::uniform, 0.0, OutflowKind::convective};
-    c.boundary[2] = c.boundary[0];
-    c.boundary[1].type = c.boundary[3].type = BoundaryType::outflow;
-    c.boundary[1].outflow = c.boundary[3].outflow = OutflowKind::zero_stress;
-    c.initial_velocity = inflow;
-    c.viscosity = U * 1.0 / 1000.0;
-    c.cfl = 0.5;
-    BodyConfig plane;
-    plane.name = "slope";
-    plane.shape = BodyShape::plane;
-    plane.point = {2.0, 1.0};
-    plane.angle = angle;
-    c.bodies = {plane};
-    BodyRun run(c, MPI_COMM_WORLD);
-    run.run_to(3.0 * 4.0 / U);
+namespace {
 
+// Flow along a plane inclined at 30 degrees to the grid (examples/inclined_plane): in the doubly periodic box
+// the plane and its images bound an inclined channel of width W = cos 30; a body force f along the plane
+// drives the exact Poiseuille flow u_t = f n (W - n) / (2 nu), peak 1 m/s, and no flow may cross the plane.
+struct PlaneFlow {
+    double net_flux, gross_flux, profile_error;  // relative to u_max L, u_max L, u_max
+};
+
+PlaneFlow inclined_channel(int cells_x, int cells_y) {
+    const CaseConfig c = load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/inclined_plane/case.yaml",
+                                   {"domain.x.cells=" + std::to_string(cells_x), "domain.y.cells=" + std::to_string(cells_y)});
+    BodyRun run(c, MPI_COMM_WORLD);
+    run.run_to(c.end_time);
+
+    const double angle = c.bodies[0].angle, W = std::cos(angle), nu = c.viscosity;
+    const Vec2 t(std::cos(angle), std::sin(angle)), n(-std::sin(angle), std::cos(angle));
+    const double f = Vec2(c.body_force[0], c.body_force[1]).dot(t), u_max = f * W * W / (8 * nu);
     const Body& body = run.ibm.bodies()[0];
-    const auto markers = body.outline().markers(0.5 / 32);
+    const Grid& g = run.solver.grid();
+    const double h = g.x_axis().width(0);
+    const auto markers = body.outline().markers(0.5 * h);
     std::vector<Vec2> points;
     for (const Marker& m : markers) points.push_back(m.position);
-    const Grid& g = run.solver.grid();
     const auto su = delta_stencils(g, DeltaKernel::roma3, Staggering::u_face, points);
     const auto sv = delta_stencils(g, DeltaKernel::roma3, Staggering::v_face, points);
     const auto Uat = interpolate_velocity(g, su, sv, run.solver.velocity());
@@ -123,9 +116,43 @@ TEST(MovingBodies, NoFlowThroughAnInclinedPlane) {
         gross += std::abs(un) * markers[l].length;
         length += markers[l].length;
     }
-    std::printf("inclined plane (30 deg, length %.3f): net flux %.2e U L, gross |u.n| flux %.2e U L, max slip "
-                "after forcing %.2e U\n",
-                length, net / (U * length), gross / (U * length), run.last[0].max_slip / U);
-    EXPECT_LT(std::abs(net) / (U * length), 0.005);
-    EXPECT_LT(gross / (U * length), 0.005);
+    // Profile: distance of each cell centre from the nearest image of the plane, n in [0, W).
+    Field2D uc(g), vc(g);
+    cell_centred_velocity(g, run.solver.velocity(), uc, vc);
+    double profile_error = 0.0;
+    for (int j = 0; j < g.ny(); ++j)
+        for (int i = 0; i < g.nx(); ++i) {
+            const Vec2 x(g.lx().c(i), g.ly().c(j));
+            const double d = std::fmod(std::fmod(x.dot(n), W) + W, W);
+            if (d < 3 * h || d > W - 3 * h) continue;
+            const double exact = f * d * (W - d) / (2 * nu);
+            profile_error = std::max(profile_error, std::abs(Vec2(uc(i, j), vc(i, j)).dot(t) - exact));
+        }
+    MPI_Allreduce(MPI_IN_PLACE, &profile_error, 1, MPI_DOUBLE, MPI_MAX, g.comm());
+    const PlaneFlow r{net / (u_max * length), gross / (u_max * length), profile_error / u_max};
+    if (g.rank() == 0)
+        std::printf("inclined plane (30 deg), %dx%d: net flux %.2e u_max L, gross |u.n| flux %.2e u_max L, "
+                    "max slip after forcing %.2e u_max, profile error %.3f u_max\n",
+                    cells_x, cells_y, r.net_flux, r.gross_flux, run.last[0].max_slip / u_max, r.profile_error);
+    return r;
+}
+
+}  // namespace
+
+// Steady state (6 s = 4 viscous times W^2/nu) at W/h = 14 and 28:
+//   - the net flux through the outline, |sum (u . n) ds|, and the flux of |u . n|, below 0.5 % of u_max L
+//     (the forcing leaves a slip of ~1e-3 u_max at the markers after the projection);
+//   - the along-plane velocity at least 3 cells from the plane converges to the exact profile at first order
+//     (observed order >= 0.9): the diffuse interface thickens the plane by about one cell (the channel is
+//     narrower by ~1.1 h; docs/validation.md), the first-order error of regularised-delta forcing.
+TEST(MovingBodies, NoFlowThroughAnInclinedPlane) {
+    const PlaneFlow coarse = inclined_channel(28, 16), fine = inclined_channel(56, 32);
+    for (const PlaneFlow& r : {coarse, fine}) {
+        EXPECT_LT(std::abs(r.net_flux), 0.005);
+        EXPECT_LT(r.gross_flux, 0.005);
+    }
+    const double order = std::log2(coarse.profile_error / fine.profile_error);
+    std::printf("inclined plane: profile error order %.2f\n", order);
+    EXPECT_GE(order, 0.9);
+    EXPECT_LT(fine.profile_error, 0.1);
 }
