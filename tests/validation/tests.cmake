@@ -5,6 +5,7 @@ add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_poiseuille.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_fixed_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_moving_bodies.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_bluff_bodies.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -33,3 +34,7 @@ chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnInclinedPlane 2 "validation")
+chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
+chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
+chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
+chute_validation(oscillating_cylinder_dutsch BluffBodies.OscillatingCylinderDutsch 2 "validation;slow")
