@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Plots of one Chute run: time series (kinetic energy, divergence, Poisson iterations, probes) and
-snapshots of the last field file (speed with streamlines, vorticity, pressure).
+"""Plots of one Chute run: time series (kinetic energy, divergence, Poisson iterations, probes), snapshots of
+the last field file (speed with streamlines, vorticity, pressure) and, per immersed body, its force
+coefficients against time (body_<name>.png) and the vorticity around it (vorticity_<name>.png).
 
 Usage: /usr/bin/python3 python/plot_run.py RESULTS_DIR
 Uses Debian's numpy, h5py and matplotlib (call /usr/bin/python3: a pyenv python does not see them).
@@ -17,8 +18,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def load_timeseries(run_dir):
-    path = os.path.join(run_dir, "timeseries.h5")
+def load_timeseries(run_dir, stem="timeseries"):
+    path = os.path.join(run_dir, stem + ".h5")
     with h5py.File(path, "r") as f:
         columns = f.attrs["columns"]  # one comma-separated string (core/timeseries.cpp)
         columns = (columns.decode() if isinstance(columns, bytes) else str(columns)).split(",")
@@ -86,13 +87,67 @@ def plot_fields(run_dir):
     plt.close(fig)
 
 
+def plot_body(run_dir, name, b, fields_file):
+    """Force coefficients from the forcing (a) and the surface stress (b, split by kind), slip error."""
+    t = b["t"]
+    fig, ax = plt.subplots(3, 1, figsize=(8, 7.5), sharex=True)
+    ax[0].plot(t, b["cx_forcing"], label="C_x forcing (a)")
+    ax[0].plot(t, b["cx_surface"], "--", label="C_x surface (b)")
+    ax[0].plot(t, b["cy_forcing"], label="C_y forcing (a)")
+    ax[0].plot(t, b["cy_surface"], "--", label="C_y surface (b)")
+    ax[0].set_ylabel("force coefficient")
+    ax[0].legend(fontsize=7, ncol=2)
+    ax[1].plot(t, b["cx_pressure"], label="C_x pressure")
+    ax[1].plot(t, b["cx_viscous"], label="C_x viscous")
+    ax[1].plot(t, b["cy_pressure"], label="C_y pressure")
+    ax[1].plot(t, b["cy_viscous"], label="C_y viscous")
+    ax[1].set_ylabel("surface stress by kind")
+    ax[1].legend(fontsize=7, ncol=2)
+    ax[2].semilogy(t[1:], np.maximum(b["max_slip"][1:], 1e-300), label="max")
+    ax[2].semilogy(t[1:], np.maximum(b["rms_slip"][1:], 1e-300), label="rms")
+    ax[2].set_ylabel("slip at markers (m/s)")
+    ax[2].legend(fontsize=7)
+    ax[-1].set_xlabel("t (s)")
+    fig.suptitle(f"body {name}")
+    fig.tight_layout()
+    fig.savefig(os.path.join(run_dir, f"body_{name}.png"), dpi=110)
+    plt.close(fig)
+    if not fields_file:
+        return
+    # Vorticity around the body's last position: a window of a quarter of the domain's diagonal.
+    with h5py.File(fields_file, "r") as f:
+        x, y, w, time = f["x"][...], f["y"][...], f["vorticity"][...], f.attrs["time"]
+    k = int(np.argmin(np.abs(t - time)))
+    cx, cy = b["x"][k], b["y"][k]
+    half = 0.125 * np.hypot(x[-1] - x[0], y[-1] - y[0])
+    fig, a = plt.subplots(figsize=(7, 5))
+    lim = np.percentile(np.abs(w), 99.5) or 1.0
+    m = a.pcolormesh(x, y, w, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="flat")
+    fig.colorbar(m, ax=a, label="vorticity (1/s)")
+    a.set_xlim(max(x[0], cx - half), min(x[-1], cx + 2 * half))
+    a.set_ylim(max(y[0], cy - half), min(y[-1], cy + half))
+    a.set_aspect("equal")
+    a.set_title(f"vorticity around {name}, t = {time:.4g} s")
+    a.set_xlabel("x (m)")
+    a.set_ylabel("y (m)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(run_dir, f"vorticity_{name}.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     run_dir = sys.argv[1]
     plot_timeseries(run_dir, load_timeseries(run_dir))
     plot_fields(run_dir)
-    print(f"plots: {os.path.join(run_dir, 'timeseries.png')}, {os.path.join(run_dir, 'fields.png')}")
+    written = ["timeseries.png", "fields.png"]
+    fields = sorted(glob.glob(os.path.join(run_dir, "fields_*.h5")))
+    for path in sorted(glob.glob(os.path.join(run_dir, "body_*.h5"))):
+        name = os.path.basename(path)[len("body_"):-len(".h5")]
+        plot_body(run_dir, name, load_timeseries(run_dir, "body_" + name), fields[-1] if fields else None)
+        written += [f"body_{name}.png", f"vorticity_{name}.png"]
+    print("plots: " + ", ".join(os.path.join(run_dir, w) for w in written))
 
 
 if __name__ == "__main__":
