@@ -103,8 +103,17 @@ def plot_body(run_dir, name, b, fields_file):
     ax[1].plot(t, b["cy_viscous"], label="C_y viscous")
     ax[1].set_ylabel("surface stress by kind")
     ax[1].legend(fontsize=7, ncol=2)
-    ax[2].semilogy(t[1:], np.maximum(b["max_slip"][1:], 1e-300), label="max")
-    ax[2].semilogy(t[1:], np.maximum(b["rms_slip"][1:], 1e-300), label="rms")
+    # Impulsive starts give a spike of many times the later forces: scale the axes to the bulk of the run.
+    for a, keys in ((ax[0], ["cx_forcing", "cx_surface", "cy_forcing", "cy_surface"]),
+                    (ax[1], ["cx_pressure", "cx_viscous", "cy_pressure", "cy_viscous"])):
+        values = np.concatenate([b[k][len(t) // 20:] for k in keys]) if len(t) > 20 else None
+        if values is not None and values.size:
+            lo, hi = np.percentile(values, [0.5, 99.5])
+            pad = 0.1 * (hi - lo) or 0.1 * max(abs(hi), 1e-12)
+            a.set_ylim(lo - pad, hi + pad)
+    slip = b["max_slip"][1:] > 0
+    ax[2].semilogy(t[1:][slip], b["max_slip"][1:][slip], label="max")
+    ax[2].semilogy(t[1:][slip], b["rms_slip"][1:][slip], label="rms")
     ax[2].set_ylabel("slip at markers (m/s)")
     ax[2].legend(fontsize=7)
     ax[-1].set_xlabel("t (s)")
