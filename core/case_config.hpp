@@ -82,6 +82,7 @@ struct CaseConfig {
     InitialCondition initial = InitialCondition::uniform;
     std::array<double, 2> initial_velocity{0.0, 0.0};  // uniform current
     double taylor_green_amplitude = 1.0;
+    double initial_perturbation = 0.0;  // m/s, cross-stream sine added to the uniform start
 
     std::array<BoundaryConfig, 4> boundary;  // indexed by Side: left, right, bottom, top
 

@@ -53,7 +53,11 @@ void FlowSolver::set_initial_condition() {
                 p_(i, j) = -0.25 * V0 * V0 * (std::cos(2.0 * X.c(i)) + std::cos(2.0 * Y.c(j)));
             } else {
                 vel_.u(i, j) = config_.initial_velocity[0];
-                vel_.v(i, j) = config_.initial_velocity[1];
+                // v = e sin(2 pi (x - x0) / Lx) is divergence-free; the first projection fits it to the walls.
+                const double Lx = grid_->x_axis().length();
+                vel_.v(i, j) = config_.initial_velocity[1] +
+                               config_.initial_perturbation *
+                                   std::sin(2.0 * 3.14159265358979323846 * (X.c(i) - grid_->x_axis().start()) / Lx);
                 p_(i, j) = 0.0;
             }
         }
