@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "convection.hpp"
 #include "diffusion.hpp"
@@ -57,7 +58,7 @@ void FlowSolver::set_initial_condition() {
                 const double Lx = grid_->x_axis().length();
                 vel_.v(i, j) = config_.initial_velocity[1] +
                                config_.initial_perturbation *
-                                   std::sin(2.0 * 3.14159265358979323846 * (X.c(i) - grid_->x_axis().start()) / Lx);
+                                   std::sin(2.0 * std::numbers::pi * (X.c(i) - grid_->x_axis().start()) / Lx);
                 p_(i, j) = 0.0;
             }
         }

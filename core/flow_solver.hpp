@@ -33,6 +33,7 @@ struct StepStats {
     double seconds_momentum = 0.0;   // prediction incl. boundary conditions
     double seconds_poisson = 0.0;    // right-hand side, hypre solve
     double seconds_correction = 0.0; // gradient correction, halo exchange
+    double seconds_forcing = 0.0;    // immersed-boundary forcing between predict() and project()
 };
 
 class FlowSolver {

@@ -27,7 +27,7 @@ DirectForcing::DirectForcing(const Grid& grid, const IbmConfig& config, const st
     ranges_.push_back(0);
     for (const Body& body : bodies_) {
         const double h = min_spacing_along(grid_, body);
-        spacing_.push_back(config_.marker_spacing * h);
+        cell_size_.push_back(h);
         for (Marker m : body.outline().markers(config_.marker_spacing * h)) {
             // Retraction (Breugem 2012, sec. 2.3): markers a fraction of a cell inside the surface
             // compensate for the thickness the kernel gives the interface.
@@ -61,13 +61,9 @@ void DirectForcing::find_interior_faces() {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         if (!body.outline().closed()) continue;
-        const double depth = (kernel_support(config_.kernel) + config_.retraction) * spacing_[b] / config_.marker_spacing;
+        const double depth = (kernel_support(config_.kernel) + config_.retraction) * cell_size_[b];
         // Owned faces in the body's bounding box only.
-        const double reach = body.outline().is_circle()
-                                 ? body.outline().radius()
-                                 : std::max_element(body.outline().vertices().begin(), body.outline().vertices().end(),
-                                                    [](const Vec2& a, const Vec2& c) { return a.norm() < c.norm(); })
-                                       ->norm();
+        const double reach = body.outline().reach();
         const Vec2 c = body.state().centre;
         auto range = [](const LocalAxis& a, int n, double lo, double hi) {
             int first = 0, last = n - 1;

@@ -40,10 +40,8 @@ public:
     void apply(Velocity& star, double dt);
     const std::vector<BodyForcing>& forcing() const { return result_; }
 
-    // The markers of body b as placed for the last step: world positions and volumes.
-    std::size_t markers(std::size_t b) const { return ranges_[b + 1] - ranges_[b]; }
     // Marker spacing used for body b (m).
-    double marker_spacing(std::size_t b) const { return spacing_[b]; }
+    double marker_spacing(std::size_t b) const { return config_.marker_spacing * cell_size_[b]; }
 
 private:
     void place_markers();
@@ -54,7 +52,7 @@ private:
     const Grid& grid_;
     IbmConfig config_;
     const std::vector<Body>& bodies_;
-    std::vector<double> spacing_;
+    std::vector<double> cell_size_;      // smallest grid spacing along each body's outline
     std::vector<std::size_t> ranges_;    // markers of body b: [ranges_[b], ranges_[b+1])
     std::vector<Marker> body_frame_;     // all markers, body frame (retraction applied)
     std::vector<Vec2> world_;            // all markers, world frame

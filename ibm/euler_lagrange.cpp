@@ -8,6 +8,12 @@ namespace chute {
 
 namespace {
 
+// Index of the cell whose lines bracket x (-1 below the first line, cells() at or beyond the last).
+int cell_below(const Axis& axis, double x) {
+    const auto& L = axis.lines();
+    return static_cast<int>(std::upper_bound(L.begin(), L.end(), x) - L.begin()) - 1;
+}
+
 // Positions of one staggering along one axis: grid lines (face direction) or cell centres.
 struct AxisPoints {
     const Axis& axis;
@@ -18,8 +24,7 @@ struct AxisPoints {
     double position(int k) const { return on_lines ? axis.line(k) : axis.centre(k); }
     // Global index of the point at or below x (may be outside [first, last]).
     int below(double x) const {
-        const auto& L = axis.lines();
-        const int cell = static_cast<int>(std::upper_bound(L.begin(), L.end(), x) - L.begin()) - 1;
+        const int cell = cell_below(axis, x);
         if (on_lines) return cell;
         return x >= axis.centre(cell) ? cell : cell - 1;
     }
@@ -44,7 +49,7 @@ AxisPoints axis_points(const Grid& grid, Staggering s, int dir) {
     const bool on_lines = (s == Staggering::u_face && dir == 0) || (s == Staggering::v_face && dir == 1);
     const int n = axis.cells();
     // Faces on the domain boundary are set by boundary conditions: not unknowns.
-    return {axis, on_lines, on_lines ? 1 : 0, on_lines ? n - 1 : n - 1, local.offset, local.n};
+    return {axis, on_lines, on_lines ? 1 : 0, n - 1, local.offset, local.n};
 }
 
 Stencil build(const AxisPoints& ax, const AxisPoints& ay, const std::vector<std::pair<int, double>>& wx,
@@ -69,12 +74,7 @@ Stencil build(const AxisPoints& ax, const AxisPoints& ay, const std::vector<std:
 }  // namespace
 
 Vec2 local_spacing(const Grid& grid, const Vec2& X) {
-    auto width = [](const Axis& a, double x) {
-        const auto& L = a.lines();
-        const int k = std::clamp(static_cast<int>(std::upper_bound(L.begin(), L.end(), x) - L.begin()) - 1, 0,
-                                 a.cells() - 1);
-        return a.width(k);
-    };
+    auto width = [](const Axis& a, double x) { return a.width(std::clamp(cell_below(a, x), 0, a.cells() - 1)); };
     return {width(grid.x_axis(), X.x()), width(grid.y_axis(), X.y())};
 }
 

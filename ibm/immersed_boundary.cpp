@@ -1,5 +1,6 @@
 #include "immersed_boundary.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace chute {
@@ -17,6 +18,19 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const CaseConfig& config) :
     forcing_ = std::make_unique<DirectForcing>(grid, config.ibm, bodies_);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         stress_.push_back(std::make_unique<SurfaceStress>(grid, config.ibm, bodies_[b], forcing_->marker_spacing(b)));
+}
+
+StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, double dt) {
+    dt = flow.predict(dt);
+    const auto start = std::chrono::steady_clock::now();
+    if (!bodies.empty()) {
+        bodies.move_to(flow.time() + dt);
+        bodies.force(flow.predicted(), dt);
+    }
+    const double seconds_forcing = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    StepStats stats = flow.project();
+    stats.seconds_forcing = seconds_forcing;
+    return stats;
 }
 
 void ImmersedBoundary::move_to(double t) {

@@ -15,6 +15,7 @@
 
 #include "body.hpp"
 #include "direct_forcing.hpp"
+#include "flow_solver.hpp"
 #include "surface_stress.hpp"
 
 namespace chute {
@@ -44,5 +45,9 @@ private:
     std::unique_ptr<DirectForcing> forcing_;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
 };
+
+// One time step of the flow with its bodies, in the order of DESIGN.md's data flow: predict u*, move the
+// bodies to t^{n+1}, force u*, project. dt <= 0: the stable step. The forcing's time is in seconds_forcing.
+StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, double dt = 0.0);
 
 }  // namespace chute

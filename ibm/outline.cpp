@@ -82,6 +82,13 @@ double Outline::polar_moment() const {
     return j / 12.0;
 }
 
+double Outline::reach() const {
+    if (kind_ == Kind::circle) return radius_;
+    double r = 0.0;
+    for (const Vec2& v : vertices_) r = std::max(r, v.norm());
+    return r;
+}
+
 std::vector<Marker> Outline::markers(double spacing) const {
     if (!(spacing > 0.0)) throw std::invalid_argument("markers: spacing must be positive");
     std::vector<Marker> m;

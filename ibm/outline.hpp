@@ -39,13 +39,11 @@ public:
     static Outline segment(const Vec2& a, const Vec2& b);
 
     bool closed() const { return kind_ != Kind::segment; }
-    bool is_circle() const { return kind_ == Kind::circle; }
-    double radius() const { return radius_; }
-    const std::vector<Vec2>& vertices() const { return vertices_; }  // counterclockwise; segment: a, b
 
     double perimeter() const;
     double area() const;          // 0 for an open line
     double polar_moment() const;  // integral of |r|^2 over the area about the centroid (m^4)
+    double reach() const;         // largest distance of the outline from the body-frame origin
     // Markers spaced at most `spacing` apart, evenly along each edge (circle: along the arc).
     std::vector<Marker> markers(double spacing) const;
     // Is the body-frame point inside the solid (closed outlines), or on its solid side (open lines)?

@@ -161,14 +161,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         if (dt >= remaining) dt = remaining;
         else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
         // One step: predict u*, force it to follow the bodies at t^{n+1}, project (DESIGN.md data flow).
-        solver.predict(dt);
-        const auto forcing_start = clock::now();
-        if (!bodies.empty()) {
-            bodies.move_to(solver.time() + dt);
-            bodies.force(solver.predicted(), dt);
-        }
-        t_forcing += since(forcing_start);
-        const StepStats st = solver.project();
+        const StepStats st = advance(solver, bodies, dt);
 
         ke = kinetic_energy(grid, solver.velocity());
         div = max_divergence(grid, solver.velocity());
@@ -210,6 +203,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         t_poisson += st.seconds_poisson;
         t_correction += st.seconds_correction;
         t_output += out_seconds;
+        t_forcing += st.seconds_forcing;
         iterations += st.poisson_iterations;
         summary.seconds_per_step_min = std::min(summary.seconds_per_step_min, step_seconds);
         summary.seconds_per_step_max = std::max(summary.seconds_per_step_max, step_seconds);

@@ -168,10 +168,7 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
         ImmersedBoundary ibm(solver.grid(), cc);
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            const double dt = solver.predict(0.002);
-            ibm.move_to(solver.time() + dt);
-            ibm.force(solver.predicted(), dt);
-            solver.project();
+            advance(solver, ibm, 0.002);
             f = ibm.forces(solver.velocity(), solver.pressure());
         }
         const BodyForces& b = f[0];

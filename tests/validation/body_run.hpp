@@ -23,10 +23,7 @@ public:
 
     // One step; returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {
-        dt = solver.predict(dt);
-        ibm.move_to(solver.time() + dt);
-        ibm.force(solver.predicted(), dt);
-        solver.project();
+        advance(solver, ibm, dt);
         last = ibm.forces(solver.velocity(), solver.pressure());
         history.push_back({solver.time(), last.at(0)});
         return last;
