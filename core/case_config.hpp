@@ -68,6 +68,20 @@ struct IbmConfig {
     std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
 };
 
+// ---- Free bodies (rigidbody/) and contact (contact/) ----
+// Rebound laws at an impact (contact/rebound.hpp):
+//   lumped (RocFall's lumped mass, Turmel & Locat 2008): the centre's velocity, v_n' = -Rn v_n, v_t' = Rt v_t;
+//   impulse: the same coefficients on the contact point's velocity, by an impulse that also turns the body.
+enum class ReboundLaw { lumped, impulse };
+
+struct ContactConfig {
+    ReboundLaw law = ReboundLaw::lumped;
+    double normal_restitution = 0.8;      // Rn
+    double tangential_restitution = 0.8;  // Rt
+    double rest_speed = 0.01;             // m/s: a slower rebound leaves the body resting on the obstacle
+    double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
+};
+
 enum class ConvectionScheme { central, van_leer, koren };
 enum class InitialCondition { uniform, taylor_green };
 

@@ -82,6 +82,14 @@ double Outline::polar_moment() const {
     return j / 12.0;
 }
 
+Vec2 Outline::support_point(const Vec2& d) const {
+    if (kind_ == Kind::circle) return radius_ * d.normalized();
+    Vec2 best = vertices_.front();
+    for (const Vec2& v : vertices_)
+        if (v.dot(d) > best.dot(d)) best = v;
+    return best;
+}
+
 double Outline::reach() const {
     if (kind_ == Kind::circle) return radius_;
     double r = 0.0;

@@ -44,6 +44,9 @@ public:
     double area() const;          // 0 for an open line
     double polar_moment() const;  // integral of |r|^2 over the area about the centroid (m^4)
     double reach() const;         // largest distance of the outline from the body-frame origin
+    // The point of the outline farthest along the direction d (body frame): a corner of a polygon, the
+    // point of a circle where d is the outward normal. Contact detection finds a body's lowest point with it.
+    Vec2 support_point(const Vec2& d) const;
     // Markers spaced at most `spacing` apart, evenly along each edge (circle: along the arc).
     std::vector<Marker> markers(double spacing) const;
     // Is the body-frame point inside the solid (closed outlines), or on its solid side (open lines)?
