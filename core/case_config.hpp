@@ -33,17 +33,19 @@ struct BoundaryConfig {
 
 // ---- Immersed bodies (ibm/) ----
 enum class BodyShape { circle, rectangle, polygon, plane, segment };
-enum class MotionType { fixed, constant_velocity, oscillation, uniform_acceleration };
+enum class MotionType { fixed, constant_velocity, oscillation, uniform_acceleration, free };
 enum class DeltaKernel { roma3, peskin4 };
 
 // Prescribed motion of a body's reference point (its centre of area) and angle, from its initial place:
 //   fixed; constant_velocity: x0 + V t; oscillation: x0 + A sin(2 pi f t + phase);
 //   uniform_acceleration (from rest): x0 + a t^2 / 2.  Angles likewise.
+//   free: moved by the forces on it (rigidbody/), starting with `velocity` and `angular_velocity`.
 struct MotionConfig {
     MotionType type = MotionType::fixed;
     std::array<double, 2> velocity{0.0, 0.0}, amplitude{0.0, 0.0}, acceleration{0.0, 0.0};
     double angular_velocity = 0.0, angular_amplitude = 0.0, angular_acceleration = 0.0;  // rad, s
     double frequency = 0.0, phase = 0.0;                                                 // Hz, rad
+    std::array<bool, 3> locked{false, false, false};  // free: x, y, rotation held
 };
 
 struct BodyConfig {
@@ -57,6 +59,7 @@ struct BodyConfig {
     std::array<double, 2> point{0.0, 0.0};       // plane: a point on it
     std::array<double, 2> from{0.0, 0.0}, to{0.0, 0.0};  // segment
     MotionConfig motion;
+    double density = 0.0;                        // kg/m^3, free bodies
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
 };
 
@@ -66,6 +69,7 @@ struct IbmConfig {
     double marker_spacing = 1.0;             // in grid cells
     double retraction = 0.3;                 // markers moved inwards by this many cells
     std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
+    double virtual_mass = 1.0;               // C_V of the free-body update (Schwarz et al. 2015)
 };
 
 // ---- Free bodies (rigidbody/) and contact (contact/) ----
@@ -92,6 +96,7 @@ struct CaseConfig {
     double viscosity = 1e-6;    // kinematic, m^2/s
     double depth = 1.0;         // m, span of a 2D run
     std::array<double, 2> body_force{0.0, 0.0};  // m/s^2, constant acceleration on the fluid
+    std::array<double, 2> gravity{0.0, -9.81};   // m/s^2, on free bodies
 
     InitialCondition initial = InitialCondition::uniform;
     std::array<double, 2> initial_velocity{0.0, 0.0};  // uniform current
@@ -102,6 +107,7 @@ struct CaseConfig {
 
     std::vector<BodyConfig> bodies;
     IbmConfig ibm;
+    ContactConfig contact;
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;

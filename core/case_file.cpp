@@ -143,6 +143,12 @@ std::vector<CaseKey> make_schema() {
          .default_value = "[0.0, 0.0]",
          .units = "m/s^2",
          .meaning = "Constant acceleration on the fluid, e.g. gravity [0, -9.81]."},
+        {.path = "gravity",
+         .type = K::vector2,
+         .default_value = "[0.0, -9.81]",
+         .units = "m/s^2",
+         .meaning = "Gravity on free bodies. The pressure is dynamic (hydrostatic part removed), so the fluid "
+                    "feels no gravity and each free body gets its buoyancy -rho_f V g explicitly."},
 
         {.path = "initial", .type = K::section, .meaning = "Initial velocity field."},
         {.path = "initial.type",
@@ -306,24 +312,43 @@ std::vector<CaseKey> make_schema() {
         {.path = "bodies.<body>.motion.type",
          .type = K::choice,
          .default_value = "fixed",
-         .choices = {"fixed", "constant_velocity", "oscillation", "uniform_acceleration"},
+         .choices = {"fixed", "constant_velocity", "oscillation", "uniform_acceleration", "free"},
          .meaning = "`fixed`; `constant_velocity`: x = x0 + V t; `oscillation`: x = x0 + A sin(2 pi f t + "
                     "phase); `uniform_acceleration` from rest: x = x0 + a t^2/2. The angle follows the same "
-                    "law with its own rate, amplitude or acceleration."},
+                    "law with its own rate, amplitude or acceleration. `free`: moved by gravity, buoyancy, the "
+                    "fluid and contact (needs `density`); `velocity` and `angular_velocity` are its start."},
+        {.path = "bodies.<body>.motion.lock_x",
+         .type = K::boolean,
+         .default_value = "false",
+         .when_key = "type",
+         .when_values = {"free"},
+         .meaning = "Keep the free body from moving along x."},
+        {.path = "bodies.<body>.motion.lock_y",
+         .type = K::boolean,
+         .default_value = "false",
+         .when_key = "type",
+         .when_values = {"free"},
+         .meaning = "Keep the free body from moving along y."},
+        {.path = "bodies.<body>.motion.lock_rotation",
+         .type = K::boolean,
+         .default_value = "false",
+         .when_key = "type",
+         .when_values = {"free"},
+         .meaning = "Keep the free body from turning (Turmel & Locat 2008 locked rotation)."},
         {.path = "bodies.<body>.motion.velocity",
          .type = K::vector2,
          .default_value = "[0.0, 0.0]",
          .when_key = "type",
-         .when_values = {"constant_velocity"},
+         .when_values = {"constant_velocity", "free"},
          .units = "m/s",
-         .meaning = "Velocity V of the centre."},
+         .meaning = "Velocity V of the centre (`free`: at the start)."},
         {.path = "bodies.<body>.motion.angular_velocity",
          .type = K::number,
          .default_value = "0.0",
          .when_key = "type",
-         .when_values = {"constant_velocity"},
+         .when_values = {"constant_velocity", "free"},
          .units = "rad/s",
-         .meaning = "Angular velocity, counterclockwise."},
+         .meaning = "Angular velocity, counterclockwise (`free`: at the start)."},
         {.path = "bodies.<body>.motion.amplitude",
          .type = K::vector2,
          .default_value = "[0.0, 0.0]",
@@ -367,6 +392,11 @@ std::vector<CaseKey> make_schema() {
          .when_values = {"uniform_acceleration"},
          .units = "rad/s^2",
          .meaning = "Angular acceleration, counterclockwise."},
+        {.path = "bodies.<body>.density",
+         .type = K::number,
+         .min = above(0),
+         .units = "kg/m^3",
+         .meaning = "Density of a free body (the study's rocks: 2400-2700). Required with motion type `free`."},
         {.path = "bodies.<body>.reference",
          .type = K::section,
          .meaning = "Scales of the force coefficients C = F / (0.5 rho U^2 L depth) in the body's time "
@@ -454,6 +484,48 @@ std::vector<CaseKey> make_schema() {
          .min = above(0),
          .meaning = "Distances from the surface, in cells along the normal, of the two probes that sample "
                     "pressure and velocity for the surface-stress force (extrapolated to the surface)."},
+        {.path = "numerics.ibm.virtual_mass",
+         .type = K::number,
+         .default_value = "1.0",
+         .min = at_least(0.0),
+         .max = at_most(2.0),
+         .meaning = "Virtual-mass coefficient C_V of the free-body update (Schwarz, Kempe & Froehlich 2015): C_V "
+                    "rho_f V dU/dt is added to both sides, so light bodies (rho_s/rho_f near or below 1) stay "
+                    "stable with an explicit coupling. It cancels at convergence; 0 switches it off."},
+
+        {.path = "contact", .type = K::section, .meaning = "Impacts of free bodies on planes and on wall or slip sides of the domain."},
+        {.path = "contact.law",
+         .type = K::choice,
+         .default_value = "lumped",
+         .choices = {"lumped", "impulse"},
+         .meaning = "`lumped` (RocFall's lumped mass): v_n' = -Rn v_n, v_t' = Rt v_t on the centre's velocity, "
+                    "spin kept. `impulse`: the same coefficients on the contact point's velocity, through an "
+                    "impulse that also changes the spin."},
+        {.path = "contact.normal_restitution",
+         .type = K::number,
+         .default_value = "0.8",
+         .min = at_least(0.0),
+         .max = at_most(1.0),
+         .meaning = "Rn (Turmel & Locat 2008: 0.8)."},
+        {.path = "contact.tangential_restitution",
+         .type = K::number,
+         .default_value = "0.8",
+         .min = at_least(0.0),
+         .max = at_most(1.0),
+         .meaning = "Rt (Turmel & Locat 2008: 0.8)."},
+        {.path = "contact.rest_speed",
+         .type = K::number,
+         .default_value = "0.01",
+         .min = above(0.0),
+         .units = "m/s",
+         .meaning = "A rebound slower than this (normal speed of the contact point) leaves the body resting on "
+                    "the obstacle, sliding with `friction`."},
+        {.path = "contact.friction",
+         .type = K::number,
+         .default_value = "0.0",
+         .min = at_least(0.0),
+         .meaning = "Coulomb friction coefficient of a body resting (sliding) on an obstacle."},
+
         {.path = "numerics.poisson", .type = K::section, .meaning = "Pressure Poisson solver."},
         {.path = "numerics.poisson.tolerance",
          .type = K::number,
@@ -788,6 +860,13 @@ class Reader {
         c.density = number("fluid.density");
         c.viscosity = number("fluid.viscosity");
         c.body_force = vector2("fluid.body_force");
+        c.gravity = vector2("gravity");
+        c.contact.law = to_enum<ReboundLaw>("contact.law", choice("contact.law"),
+                                            {{"lumped", ReboundLaw::lumped}, {"impulse", ReboundLaw::impulse}});
+        c.contact.normal_restitution = number("contact.normal_restitution");
+        c.contact.tangential_restitution = number("contact.tangential_restitution");
+        c.contact.rest_speed = number("contact.rest_speed");
+        c.contact.friction = number("contact.friction");
 
         c.initial = to_enum<InitialCondition>(
             "initial.type", choice("initial.type"),
@@ -1179,6 +1258,7 @@ class Reader {
         m.marker_spacing = number("numerics.ibm.marker_spacing");
         m.retraction = number("numerics.ibm.retraction");
         m.stress_probes = vector2("numerics.ibm.stress_probes");
+        m.virtual_mass = number("numerics.ibm.virtual_mass");
         if (!(m.stress_probes[1] > m.stress_probes[0]))
             fail("numerics.ibm.stress_probes", "the second distance must be greater than the first, got [" +
                                                    fmt(m.stress_probes[0]) + ", " + fmt(m.stress_probes[1]) + "]");
@@ -1269,7 +1349,8 @@ class Reader {
                                                 {{"fixed", MotionType::fixed},
                                                  {"constant_velocity", MotionType::constant_velocity},
                                                  {"oscillation", MotionType::oscillation},
-                                                 {"uniform_acceleration", MotionType::uniform_acceleration}});
+                                                 {"uniform_acceleration", MotionType::uniform_acceleration},
+                                                 {"free", MotionType::free}});
             if (!closed && b.motion.type != MotionType::fixed)
                 fail(m + ".type", "planes and segments are fixed; only circles, rectangles and polygons move");
             b.motion.velocity = vector2(m + ".velocity");
@@ -1280,6 +1361,13 @@ class Reader {
             b.motion.phase = number(m + ".phase") * deg;
             b.motion.acceleration = vector2(m + ".acceleration");
             b.motion.angular_acceleration = number(m + ".angular_acceleration");
+            if (b.motion.type == MotionType::free) {
+                if (!present(p + ".density")) fail(p + ".density", "a free body needs its density");
+                b.density = number(p + ".density");
+                b.motion.locked = {boolean(m + ".lock_x"), boolean(m + ".lock_y"), boolean(m + ".lock_rotation")};
+            } else if (present(p + ".density")) {
+                fail(p + ".density", "only free bodies (motion type `free`) have a density");
+            }
 
             b.reference_velocity = number(p + ".reference.velocity");
             if (present(p + ".reference.length")) b.reference_length = number(p + ".reference.length");

@@ -17,6 +17,10 @@ BodyState PrescribedMotion::at(double t) const {
     switch (m_.type) {
         case MotionType::fixed:
             break;
+        case MotionType::free:  // the start; later states come from the rigid-body update
+            s.velocity = V;
+            s.angular_velocity = m_.angular_velocity;
+            break;
         case MotionType::constant_velocity:
             s.centre += V * t;
             s.velocity = V;
@@ -99,7 +103,7 @@ Body::Body(const BodyConfig& c, const Vec2& domain_min, const Vec2& domain_max) 
             break;
     }
     motion_ = PrescribedMotion(c.motion, centre, angle);
-    move_to(0.0);
+    state_ = motion_.at(0.0);
 }
 
 }  // namespace chute

@@ -44,8 +44,13 @@ public:
     const Outline& outline() const { return outline_; }
     const BodyState& state() const { return state_; }
     bool moves() const { return motion_.moves(); }
-    // Places the body at time t (prescribed motion).
-    void move_to(double t) { state_ = motion_.at(t); }
+    // A free body is moved by the forces on it (rigidbody/), through set_state().
+    bool free() const { return config_.motion.type == MotionType::free; }
+    // Places the body at time t (prescribed motion; a free body stays where it is).
+    void move_to(double t) {
+        if (!free()) state_ = motion_.at(t);
+    }
+    void set_state(const BodyState& s) { state_ = s; }
 
     Vec2 to_world(const Vec2& r) const { return state_.centre + rotated(r, state_.angle); }
     Vec2 direction_to_world(const Vec2& d) const { return rotated(d, state_.angle); }

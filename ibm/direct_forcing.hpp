@@ -42,6 +42,7 @@ public:
 
     // Marker spacing used for body b (m).
     double marker_spacing(std::size_t b) const { return config_.marker_spacing * cell_size_[b]; }
+    double cell_size(std::size_t b) const { return cell_size_[b]; }  // smallest grid spacing along the outline
 
 private:
     void place_markers();

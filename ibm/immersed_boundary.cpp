@@ -1,11 +1,10 @@
 #include "immersed_boundary.hpp"
 
-#include <chrono>
 #include <stdexcept>
 
 namespace chute {
 
-ImmersedBoundary::ImmersedBoundary(const Grid& grid, const CaseConfig& config) : config_(config) {
+ImmersedBoundary::ImmersedBoundary(const Grid& grid, const CaseConfig& config) : grid_(grid), config_(config) {
     const Vec2 lo(config.x.start, config.y.start), hi(config.x.end, config.y.end);
     bodies_.reserve(config.bodies.size());
     for (const BodyConfig& b : config.bodies) {
@@ -18,19 +17,6 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const CaseConfig& config) :
     forcing_ = std::make_unique<DirectForcing>(grid, config.ibm, bodies_);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         stress_.push_back(std::make_unique<SurfaceStress>(grid, config.ibm, bodies_[b], forcing_->marker_spacing(b)));
-}
-
-StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, double dt) {
-    dt = flow.predict(dt);
-    const auto start = std::chrono::steady_clock::now();
-    if (!bodies.empty()) {
-        bodies.move_to(flow.time() + dt);
-        bodies.force(flow.predicted(), dt);
-    }
-    const double seconds_forcing = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    StepStats stats = flow.project();
-    stats.seconds_forcing = seconds_forcing;
-    return stats;
 }
 
 void ImmersedBoundary::move_to(double t) {

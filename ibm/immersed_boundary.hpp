@@ -1,7 +1,7 @@
 #pragma once
 // The immersed bodies of a run and what the time step asks of them:
 //
-//   move_to(t^{n+1})                 prescribed motion
+//   move_to(t^{n+1})                 prescribed motion (free bodies: rigidbody/fluid_body_coupling)
 //   force(u*, dt)                    direct forcing of the predicted velocity (direct_forcing)
 //   (projection)
 //   forces(u^{n+1}, p^{n+1/2})       hydrodynamic force and torque on each body, two independent ways:
@@ -25,6 +25,9 @@ struct BodyForces {
     double forcing_torque = 0.0;   // (a), N m
     SurfaceForces surface;         // (b), N and N m
     double max_slip = 0.0, rms_slip = 0.0;  // m/s after the forcing iterations
+    // Free bodies only (rigidbody/fluid_body_coupling), N and N m; zero for fixed and prescribed bodies.
+    Vec2 gravity = Vec2::Zero(), buoyancy = Vec2::Zero(), contact = Vec2::Zero();
+    double contact_torque = 0.0;
 };
 
 class ImmersedBoundary {
@@ -32,7 +35,9 @@ public:
     ImmersedBoundary(const Grid& grid, const CaseConfig& config);
 
     bool empty() const { return bodies_.empty(); }
+    const Grid& grid() const { return grid_; }
     const std::vector<Body>& bodies() const { return bodies_; }
+    Body& body(std::size_t b) { return bodies_[b]; }  // free bodies are moved from outside (rigidbody/)
     void move_to(double t);
     void force(Velocity& star, double dt) { forcing_->apply(star, dt); }
     std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p) const;
@@ -40,14 +45,11 @@ public:
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 
 private:
+    const Grid& grid_;
     const CaseConfig& config_;
     std::vector<Body> bodies_;
     std::unique_ptr<DirectForcing> forcing_;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
 };
-
-// One time step of the flow with its bodies, in the order of DESIGN.md's data flow: predict u*, move the
-// bodies to t^{n+1}, force u*, project. dt <= 0: the stable step. The forcing's time is in seconds_forcing.
-StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, double dt = 0.0);
 
 }  // namespace chute

@@ -8,7 +8,8 @@ std::vector<std::string> BodySeries::columns() {
             "m_forcing",   "fx_pressure", "fy_pressure", "m_pressure", "fx_viscous", "fy_viscous",
             "m_viscous",   "fx_surface",  "fy_surface",  "m_surface",  "cx_forcing", "cy_forcing",
             "cx_pressure", "cy_pressure", "cx_viscous",  "cy_viscous", "cx_surface", "cy_surface",
-            "max_slip",    "rms_slip"};
+            "max_slip",    "rms_slip",   "fx_gravity", "fy_gravity", "fx_buoyancy", "fy_buoyancy",
+            "fx_contact",  "fy_contact", "m_contact",  "fx_total",   "fy_total",   "m_total"};
 }
 
 BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const ImmersedBoundary& ibm,
@@ -25,6 +26,7 @@ void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
         const BodyForces& f = forces[k];
         const SurfaceForces& sf = f.surface;
         const Vec2 surface = sf.pressure + sf.viscous;
+        const Vec2 total = f.forcing + f.gravity + f.buoyancy + f.contact;
         const double U = body.config().reference_velocity, L = body.config().reference_length;
         const double q = 0.5 * config_.density * U * U * L * config_.depth;  // force scale, N
         series_[k]->append({t,
@@ -58,7 +60,17 @@ void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
                             surface.x() / q,
                             surface.y() / q,
                             f.max_slip,
-                            f.rms_slip});
+                            f.rms_slip,
+                            f.gravity.x(),
+                            f.gravity.y(),
+                            f.buoyancy.x(),
+                            f.buoyancy.y(),
+                            f.contact.x(),
+                            f.contact.y(),
+                            f.contact_torque,
+                            total.x(),
+                            total.y(),
+                            f.forcing_torque + f.contact_torque});
     }
 }
 

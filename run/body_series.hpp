@@ -9,6 +9,9 @@
 //   fx_surface, fy_surface, m_surface                                (b) surface stress, by kind and total
 //   cx_forcing, cy_forcing, cx_pressure, cy_pressure, cx_viscous, cy_viscous, cx_surface, cy_surface
 //   max_slip, rms_slip                                               no-slip error at the markers (m/s)
+//   fx_gravity, fy_gravity, fx_buoyancy, fy_buoyancy,               free bodies (zero otherwise): gravity,
+//   fx_contact, fy_contact, m_contact, fx_total, fy_total, m_total  buoyancy, contact (impulses / dt), total
+// For a free body (a) is the hydrodynamic force of the coupling (rigidbody/fluid_body_coupling.hpp).
 #include <memory>
 #include <vector>
 

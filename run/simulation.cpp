@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "body_series.hpp"
+#include "contact_log.hpp"
+#include "coupled_step.hpp"
 #include "case_file.hpp"
 #include "checkpoint.hpp"
 #include "diagnostics.hpp"
@@ -71,6 +73,16 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     }
     FlowSolver& solver = *solver_ptr;
     ImmersedBoundary& bodies = *ibm_ptr;
+    std::unique_ptr<FreeBodies> free_ptr;
+    try {
+        free_ptr = std::make_unique<FreeBodies>(config, bodies);
+    } catch (const std::invalid_argument& e) {
+        throw CaseError(e.what());
+    }
+    FreeBodies& free_bodies = *free_ptr;
+    if (options.restart && !free_bodies.empty())
+        throw CaseError("restarting a run with free bodies is not supported yet: their state is not in the "
+                        "checkpoint; run it from the start");
 
     if (root) std::filesystem::create_directories(options.out_dir);
     MPI_Barrier(comm);
@@ -94,6 +106,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     TimeSeries series(grid, options.out_dir, timeseries_columns(config), options.restart ? solver.time() : -1.0);
     BodySeries body_series(grid, options.out_dir, bodies, config, options.restart ? solver.time() : -1.0);
     FieldOutput fields(grid, options.out_dir, options.restart ? solver.step() : -1);
+    ContactLog contacts(root && !free_bodies.empty() ? options.out_dir / "contacts.csv" : std::filesystem::path());
     Probes probes(grid, config.probes);
     HaloExchange halo(grid);
     Field2D uc(grid), vc(grid), omega(grid), pressure_pa(grid);
@@ -129,7 +142,11 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             for (std::size_t k = 0; k < probes.size(); ++k) row.insert(row.end(), {pu[k], pv[k], pp[k]});
         }
         series.append(row);
-        if (!bodies.empty()) body_series.append(solver.time(), bodies.forces(solver.velocity(), solver.pressure()));
+        if (!bodies.empty()) {
+            std::vector<BodyForces> forces = bodies.forces(solver.velocity(), solver.pressure());
+            free_bodies.report(forces);
+            body_series.append(solver.time(), forces);
+        }
     };
 
     RunSummary summary;
@@ -156,12 +173,13 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     while (solver.time() < config.end_time - eps && (config.max_steps < 0 || summary.steps < config.max_steps)) {
         const auto step_start = clock::now();
         // Land exactly on the end time; avoid a sliver step by splitting the last two evenly.
-        double dt = solver.next_dt();
+        double dt = std::min(solver.next_dt(), free_bodies.max_dt(config.cfl));
         const double remaining = config.end_time - solver.time();
         if (dt >= remaining) dt = remaining;
         else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
         // One step: predict u*, force it to follow the bodies at t^{n+1}, project (DESIGN.md data flow).
-        const StepStats st = advance(solver, bodies, dt);
+        const StepStats st = advance(solver, bodies, free_bodies, dt);
+        if (!free_bodies.events().empty()) contacts.record(free_bodies.events());
 
         ke = kinetic_energy(grid, solver.velocity());
         div = max_divergence(grid, solver.velocity());

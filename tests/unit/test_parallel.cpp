@@ -7,7 +7,7 @@
 
 #include "flow_solver.hpp"
 #include "gather.hpp"
-#include "immersed_boundary.hpp"
+#include "coupled_step.hpp"
 
 using namespace chute;
 
@@ -166,9 +166,10 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
         cc.ranks = ranks;
         FlowSolver solver(cc, comm);
         ImmersedBoundary ibm(solver.grid(), cc);
+        FreeBodies free(cc, ibm);
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(solver, ibm, 0.002);
+            advance(solver, ibm, free, 0.002);
             f = ibm.forces(solver.velocity(), solver.pressure());
         }
         const BodyForces& b = f[0];

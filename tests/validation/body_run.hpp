@@ -8,7 +8,7 @@
 
 #include "case_file.hpp"
 #include "flow_solver.hpp"
-#include "immersed_boundary.hpp"
+#include "coupled_step.hpp"
 
 namespace chute::validation {
 
@@ -19,12 +19,13 @@ struct ForceSample {
 
 class BodyRun {
 public:
-    BodyRun(const CaseConfig& c, MPI_Comm comm) : solver(c, comm), ibm(solver.grid(), c) {}
+    BodyRun(const CaseConfig& c, MPI_Comm comm) : solver(c, comm), ibm(solver.grid(), c), free(c, ibm) {}
 
     // One step; returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {
-        advance(solver, ibm, dt);
+        advance(solver, ibm, free, dt);
         last = ibm.forces(solver.velocity(), solver.pressure());
+        free.report(last);
         history.push_back({solver.time(), last.at(0)});
         return last;
     }
@@ -43,6 +44,7 @@ public:
 
     FlowSolver solver;
     ImmersedBoundary ibm;
+    FreeBodies free;
     std::vector<BodyForces> last;
     std::vector<ForceSample> history;
 };

@@ -1,0 +1,136 @@
+#include "fluid_body_coupling.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace chute {
+
+std::vector<Obstacle> obstacles_of(const CaseConfig& c) {
+    std::vector<Obstacle> out;
+    for (const BodyConfig& b : c.bodies)
+        if (b.shape == BodyShape::plane)  // the solid lies on the right of the direction (cos a, sin a)
+            out.push_back({b.name, Vec2(b.point[0], b.point[1]), Vec2(-std::sin(b.angle), std::cos(b.angle))});
+    const Vec2 lo(c.x.start, c.y.start), hi(c.x.end, c.y.end);
+    const Obstacle sides[4] = {{"left", lo, Vec2::UnitX()},
+                               {"right", hi, -Vec2::UnitX()},
+                               {"bottom", lo, Vec2::UnitY()},
+                               {"top", hi, -Vec2::UnitY()}};
+    for (int s = 0; s < 4; ++s)
+        if (c.boundary[s].type == BoundaryType::wall || c.boundary[s].type == BoundaryType::slip)
+            out.push_back(sides[s]);
+    return out;
+}
+
+FreeBodies::FreeBodies(const CaseConfig& config, ImmersedBoundary& ibm)
+    : config_(config), ibm_(ibm), obstacles_(obstacles_of(config)), forces_(ibm.bodies().size()) {
+    const Vec2 g(config.gravity[0], config.gravity[1]);
+    for (std::size_t b = 0; b < ibm.bodies().size(); ++b) {
+        const Body& body = ibm.bodies()[b];
+        if (!body.free()) continue;
+        Free f;
+        f.index = b;
+        f.inertia = rigid_inertia(body.outline(), body.config().density, config.depth, body.config().motion.locked);
+        f.fluid_mass = config.density * body.area() * config.depth;
+        f.fluid_inertia = config.density * body.polar_moment() * config.depth;
+        f.start = body.state();
+        // First prediction: gravity and buoyancy against the body's and the virtual mass.
+        const double cv = config.ibm.virtual_mass;
+        f.acceleration = (f.inertia.mass - f.fluid_mass) * g / (f.inertia.mass + cv * f.fluid_mass);
+        f.acceleration = f.acceleration.cwiseProduct(Vec2(f.inertia.free(Dof::x), f.inertia.free(Dof::y)));
+        for (const Obstacle& ob : obstacles_)
+            if (gap(body.outline(), body.state(), ob).distance < 0.0)
+                throw std::invalid_argument("bodies." + body.name() + ": the body starts inside the obstacle `" +
+                                            ob.name + "`");
+        free_.push_back(f);
+    }
+}
+
+double FreeBodies::max_dt(double cfl) const {
+    double dt = std::numeric_limits<double>::infinity();
+    for (const Free& f : free_) {
+        const Body& body = ibm_.bodies()[f.index];
+        const double h = cfl * ibm_.forcing().cell_size(f.index);
+        // Fastest point of the outline: the centre's speed plus the spin times the reach; same for the
+        // acceleration. Largest dt with v dt + a dt^2 / 2 <= h.
+        const double reach = body.outline().reach();
+        const double v = body.state().velocity.norm() + std::abs(body.state().angular_velocity) * reach;
+        const double a = f.acceleration.norm() + std::abs(f.angular_acceleration) * reach;
+        const double step = a > 0.0 ? 2.0 * h / (v + std::sqrt(v * v + 2.0 * a * h)) : (v > 0.0 ? h / v : dt);
+        dt = std::min(dt, step);
+    }
+    return dt;
+}
+
+void FreeBodies::predict(double t, double dt, const Velocity& vel) {
+    for (Free& f : free_) {
+        Body& body = ibm_.body(f.index);
+        if (!momentum_known_) f.momentum = enclosed_momentum(ibm_.grid(), vel, body);
+        f.start = body.state();
+        f.contact_at_start = f.contact;
+        BodyState s = f.start;
+        s.acceleration = f.acceleration;
+        s.angular_acceleration = f.angular_acceleration;
+        ContactState c = f.contact;
+        move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, obstacles_, config_.contact);
+        body.set_state(s);
+    }
+    momentum_known_ = true;
+}
+
+void FreeBodies::correct(double t, double dt, const Velocity& vel) {
+    events_.clear();
+    const Grid& grid = ibm_.grid();
+    const double rho = config_.density, depth = config_.depth, cv = config_.ibm.virtual_mass;
+    const Vec2 g(config_.gravity[0], config_.gravity[1]);
+    for (Free& f : free_) {
+        Body& body = ibm_.body(f.index);
+        const BodyForcing& forcing = ibm_.forcing().forcing()[f.index];
+        const EnclosedMomentum P = enclosed_momentum(grid, vel, body);  // at the predicted place
+        FreeBodyForces& out = forces_[f.index];
+        out.hydrodynamic.force = rho * depth * (-forcing.momentum_rate + (P.linear - f.momentum.linear) / dt);
+        out.hydrodynamic.torque = rho * depth * (-forcing.torque_rate + (P.angular - f.momentum.angular) / dt);
+        out.gravity.force = f.inertia.mass * g;
+        out.buoyancy.force = -f.fluid_mass * g;
+
+        const Vec2 force = out.hydrodynamic.force + out.gravity.force + out.buoyancy.force;
+        BodyState s = f.start;
+        s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
+        s.acceleration = s.acceleration.cwiseProduct(Vec2(f.inertia.free(Dof::x), f.inertia.free(Dof::y)));
+        s.angular_acceleration = f.inertia.free(Dof::rotation)
+                                     ? (out.hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
+                                           (f.inertia.inertia + cv * f.fluid_inertia)
+                                     : 0.0;
+        f.acceleration = s.acceleration;
+        f.angular_acceleration = s.angular_acceleration;
+        f.contact = f.contact_at_start;
+        const auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia, obstacles_,
+                                           config_.contact);
+        // Contact force over the step: what the impacts changed, beyond the held acceleration.
+        const BodyState free_flight = drift([&] {
+            BodyState a = f.start;
+            a.acceleration = f.acceleration;
+            a.angular_acceleration = f.angular_acceleration;
+            return a;
+        }(), dt);
+        out.contact.force = f.inertia.mass * (s.velocity - free_flight.velocity) / dt;
+        out.contact.torque = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity) / dt;
+        events_.insert(events_.end(), ev.begin(), ev.end());
+        body.set_state(s);
+        f.momentum = enclosed_momentum(grid, vel, body);  // P^{n+1} at the body's final place
+    }
+}
+
+void FreeBodies::report(std::vector<BodyForces>& forces) const {
+    for (const Free& f : free_) {
+        const FreeBodyForces& in = forces_[f.index];
+        BodyForces& out = forces[f.index];
+        out.forcing = in.hydrodynamic.force;
+        out.forcing_torque = in.hydrodynamic.torque;
+        out.gravity = in.gravity.force;
+        out.buoyancy = in.buoyancy.force;
+        out.contact = in.contact.force;
+        out.contact_torque = in.contact.torque;
+    }
+}
+
+}  // namespace chute
