@@ -6,6 +6,7 @@ add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_fixed_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_moving_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_bluff_bodies.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_free_bodies.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -38,3 +39,8 @@ chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
 chute_validation(oscillating_cylinder_dutsch BluffBodies.OscillatingCylinderDutsch 2 "validation;slow")
+
+# Free bodies
+chute_validation(free_neutral_disc_at_rest FreeBodies.NeutrallyBuoyantDiscStaysAtRest 2 "validation")
+chute_validation(free_light_disc_rises FreeBodies.LightDiscRisesWithItsAddedMass 2 "validation")
+chute_validation(settling_disc_glowinski FreeBodies.SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber 2 "validation")

@@ -1,0 +1,98 @@
+// Free bodies in fluid: the rigid-body update coupled to the direct forcing (rigidbody/fluid_body_coupling).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "body_run.hpp"
+
+using namespace chute;
+using namespace chute::validation;
+
+namespace {
+
+const std::string kExamples = std::string(CHUTE_SOURCE_DIR) + "/examples/";
+
+bool root() {
+    int r = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    return r == 0;
+}
+
+// A disc of diameter 0.1 m at the middle of a closed 1 m box of water-like fluid, 32 cells across it.
+CaseConfig disc_in_box(double density) {
+    return load_case(kExamples + "settling_cylinder/case.yaml",
+                     {"domain.x={start: 0.0, end: 0.5, cells: 160}", "domain.y={start: 0.0, end: 0.5, cells: 160}",
+                      "fluid.viscosity=1.0e-4", "bodies.disc.centre=[0.25, 0.25]", "bodies.disc.diameter=0.1",
+                      "bodies.disc.density=" + std::to_string(density)});
+}
+
+}  // namespace
+
+// Gravity and buoyancy cancel and the fluid is at rest: nothing may move, to round-off.
+TEST(FreeBodies, NeutrallyBuoyantDiscStaysAtRest) {
+    BodyRun run(disc_in_box(1000.0), MPI_COMM_WORLD);
+    for (int k = 0; k < 50; ++k) run.step(0.002);
+    const BodyState& s = run.ibm.bodies()[0].state();
+    EXPECT_LT(s.velocity.norm(), 1e-12);
+    EXPECT_LT((s.centre - Vec2(0.25, 0.25)).norm(), 1e-12);
+}
+
+// A disc half as dense as the fluid rises; just after release the flow is potential and the disc
+// accelerates at a = (rho_f - rho_s) g / (rho_s + C_a rho_f). Water viscosity, a closed 1 m box (10 D),
+// 32 cells across the disc; the first 0.005 s ring (as for prescribed bodies) and are left out.
+//
+// Two checks. (1) The coupling: the free disc's acceleration must agree within 3 % with the one the added mass
+// of the same disc under prescribed acceleration gives on the same grid (C_a read from force (a) over the same
+// window). (2) Against potential flow, C_a = 1.02 in this box ((R_o^2 + R^2) / (R_o^2 - R^2) for a circle in
+// a circular container, Brennen 1982): the immersed disc reads C_a ~ 1.13, about 10 % high at D/h = 32
+// (docs/validation.md); held to 12 %. The coupling is explicit; without the virtual mass it diverges at this
+// density ratio (Schwarz, Kempe & Froehlich 2015).
+TEST(FreeBodies, LightDiscRisesWithItsAddedMass) {
+    const std::vector<std::string> box = {"domain.x={start: 0.0, end: 1.0, cells: 320}",
+                                          "domain.y={start: 0.0, end: 1.0, cells: 320}", "fluid.viscosity=1.0e-6"};
+    auto with = [&](std::string body) {
+        std::vector<std::string> o = box;
+        o.push_back("bodies.disc={shape: circle, centre: [0.5, 0.5], diameter: 0.1, " + body + "}");
+        return load_case(kExamples + "settling_cylinder/case.yaml", o);
+    };
+    const double m_f = 1000.0 * 3.14159265358979 * 0.05 * 0.05, m_s = 0.5 * m_f, t0 = 0.005, t1 = 0.02;
+
+    BodyRun prescribed(with("motion: {type: uniform_acceleration, acceleration: [0.0, 3.0]}"), MPI_COMM_WORLD);
+    prescribed.run_to(t1, 0.0005);
+    const double ca = -prescribed.mean(t0, t1, [](const BodyForces& f) { return f.forcing.y(); }) / (m_f * 3.0);
+
+    BodyRun run(with("density: 500.0, motion: {type: free}"), MPI_COMM_WORLD);
+    run.run_to(t0, 0.0005);
+    const double v0 = run.ibm.bodies()[0].state().velocity.y();
+    run.run_to(t1, 0.0005);
+    const BodyState& s = run.ibm.bodies()[0].state();
+    const double a_mean = (s.velocity.y() - v0) / (t1 - t0);
+    const double a_coupled = (m_f - m_s) * 9.81 / (m_s + ca * m_f), a_potential = (m_f - m_s) * 9.81 / (m_s + 1.02 * m_f);
+    if (root())
+        std::printf("light disc: mean acceleration %.4f m/s^2; from the prescribed disc's C_a %.4f: %.4f; potential "
+                    "flow (C_a 1.02): %.4f\n", a_mean, ca, a_coupled, a_potential);
+    EXPECT_NEAR(a_mean, a_coupled, 0.03 * a_coupled);
+    EXPECT_NEAR(a_mean, a_potential, 0.12 * a_potential);
+    EXPECT_LT(std::abs(s.velocity.x()), 1e-3 * s.velocity.y());  // straight up (markers are not mirror-exact)
+}
+
+// Glowinski et al. (2001, J. Comput. Phys. 169:363, sec. 5.1), reproduced by Wan & Turek (2006, Int. J.
+// Numer. Meth. Fluids 51:531): a disc (rho_s/rho_f = 1.25, d = 0.25 cm) settling in a 2 cm channel reaches
+// a particle Reynolds number rho_s U d / mu ~ 17.3 (17.15-17.45 across the reproductions), U ~ 5.55 cm/s.
+// 16 cells across the disc; terminal speed averaged over t in [0.45, 0.5] s. Band: 5 % (the issue's).
+TEST(FreeBodies, SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber) {
+    const CaseConfig c = load_case(kExamples + "settling_cylinder/case.yaml", {"time.end=0.5"});
+    BodyRun run(c, MPI_COMM_WORLD);
+    double sum = 0.0;
+    int n = 0;
+    while (run.solver.time() < 0.5 - 1e-12) {
+        run.step();
+        if (run.solver.time() >= 0.45) sum += run.ibm.bodies()[0].state().velocity.y(), ++n;
+    }
+    const double U = -sum / n, re_solid = 1250.0 * U * 0.0025 / 0.01;
+    if (root()) std::printf("settling disc: U = %.5f m/s, rho_s U d / mu = %.3f (rho_f U d / mu = %.3f)\n", U, re_solid, re_solid / 1.25);
+    EXPECT_NEAR(re_solid, 17.3, 0.05 * 17.3);
+    // It falls on the channel's axis (to 1 % of d: the markers are not exactly mirror-symmetric).
+    EXPECT_NEAR(run.ibm.bodies()[0].state().centre.x(), 0.01, 0.01 * 0.0025);
+}
