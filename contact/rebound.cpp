@@ -16,6 +16,7 @@ Vec2 point_velocity(const BodyState& s, const Vec2& X) { return s.velocity + s.a
 ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m, const ContactConfig& c) {
     ContactEvent e;
     e.point = X;
+    e.centre = s.centre;
     e.velocity_before = s.velocity;
     e.angular_velocity_before = s.angular_velocity;
     const Vec2 t = -perp(n);  // tangent; any orientation works, the law treats both alike

@@ -17,7 +17,8 @@ namespace chute {
 struct ContactEvent {
     double time = 0.0;
     std::string body, obstacle;
-    Vec2 point = Vec2::Zero();
+    Vec2 point = Vec2::Zero();   // contact point
+    Vec2 centre = Vec2::Zero();  // the body's centre at the impact
     Vec2 velocity_before = Vec2::Zero(), velocity_after = Vec2::Zero();
     double angular_velocity_before = 0.0, angular_velocity_after = 0.0;
     // Effective coefficients at the contact point: -V_n'/V_n and V_t'/V_t (NaN when V_t = 0).

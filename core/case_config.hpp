@@ -84,6 +84,14 @@ struct ContactConfig {
     double tangential_restitution = 0.8;  // Rt
     double rest_speed = 0.01;             // m/s: a slower rebound leaves the body resting on the obstacle
     double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
+    double distance = 0.0;                // m: impacts happen at this gap (0: at the surface)
+};
+
+// The lumped trajectory models a run with free bodies writes beside its CFD result (rigidbody/lumped_model):
+// Beranger et al. (1998) with these constants (Turmel & Locat 2008: C_D 2.0 for the block, C_a 0.5), and dry.
+struct LumpedConfig {
+    double drag_coefficient = 2.0;
+    double added_mass_coefficient = 0.5;
 };
 
 enum class ConvectionScheme { central, van_leer, koren };
@@ -108,6 +116,7 @@ struct CaseConfig {
     std::vector<BodyConfig> bodies;
     IbmConfig ibm;
     ContactConfig contact;
+    LumpedConfig lumped;
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;

@@ -520,11 +520,34 @@ std::vector<CaseKey> make_schema() {
          .units = "m/s",
          .meaning = "A rebound slower than this (normal speed of the contact point) leaves the body resting on "
                     "the obstacle, sliding with `friction`."},
+        {.path = "contact.distance",
+         .type = K::number,
+         .default_value = "0.0",
+         .min = at_least(0.0),
+         .units = "m",
+         .meaning = "Gap at which an impact happens. 0: at the surface. In water a flat face that meets a wall "
+                    "squarely is stopped by the fluid it squeezes out; below about one cell the squeeze film is "
+                    "unresolved (docs/validation.md), so a contact distance of one or two cells stands for the "
+                    "unresolved approach. Turmel & Locat's body-fitted mesh needed about 0.1 m."},
         {.path = "contact.friction",
          .type = K::number,
          .default_value = "0.0",
          .min = at_least(0.0),
          .meaning = "Coulomb friction coefficient of a body resting (sliding) on an obstacle."},
+
+        {.path = "lumped",
+         .type = K::section,
+         .meaning = "The lumped trajectory models written beside a run with free bodies (`lumped_<body>.csv`)."},
+        {.path = "lumped.drag_coefficient",
+         .type = K::number,
+         .default_value = "2.0",
+         .min = at_least(0.0),
+         .meaning = "C_D of the Beranger et al. (1998) model (Turmel & Locat 2008: 2.0 for the block)."},
+        {.path = "lumped.added_mass_coefficient",
+         .type = K::number,
+         .default_value = "0.5",
+         .min = at_least(0.0),
+         .meaning = "C_a of the Beranger model (Turmel & Locat 2008: 0.5)."},
 
         {.path = "numerics.poisson", .type = K::section, .meaning = "Pressure Poisson solver."},
         {.path = "numerics.poisson.tolerance",
@@ -867,6 +890,9 @@ class Reader {
         c.contact.tangential_restitution = number("contact.tangential_restitution");
         c.contact.rest_speed = number("contact.rest_speed");
         c.contact.friction = number("contact.friction");
+        c.contact.distance = number("contact.distance");
+        c.lumped.drag_coefficient = number("lumped.drag_coefficient");
+        c.lumped.added_mass_coefficient = number("lumped.added_mass_coefficient");
 
         c.initial = to_enum<InitialCondition>(
             "initial.type", choice("initial.type"),

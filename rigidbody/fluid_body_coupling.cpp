@@ -6,9 +6,10 @@
 namespace chute {
 
 std::vector<Obstacle> obstacles_of(const CaseConfig& c) {
+    // A plane body's normal points out of its solid (on the right of its direction (cos a, sin a)).
     std::vector<Obstacle> out;
     for (const BodyConfig& b : c.bodies)
-        if (b.shape == BodyShape::plane)  // the solid lies on the right of the direction (cos a, sin a)
+        if (b.shape == BodyShape::plane)
             out.push_back({b.name, Vec2(b.point[0], b.point[1]), Vec2(-std::sin(b.angle), std::cos(b.angle))});
     const Vec2 lo(c.x.start, c.y.start), hi(c.x.end, c.y.end);
     const Obstacle sides[4] = {{"left", lo, Vec2::UnitX()},
@@ -18,6 +19,8 @@ std::vector<Obstacle> obstacles_of(const CaseConfig& c) {
     for (int s = 0; s < 4; ++s)
         if (c.boundary[s].type == BoundaryType::wall || c.boundary[s].type == BoundaryType::slip)
             out.push_back(sides[s]);
+    // Impacts happen `contact.distance` away from each surface: move the planes out by it.
+    for (Obstacle& ob : out) ob.point += c.contact.distance * ob.normal;
     return out;
 }
 
@@ -40,7 +43,7 @@ FreeBodies::FreeBodies(const CaseConfig& config, ImmersedBoundary& ibm)
         for (const Obstacle& ob : obstacles_)
             if (gap(body.outline(), body.state(), ob).distance < 0.0)
                 throw std::invalid_argument("bodies." + body.name() + ": the body starts inside the obstacle `" +
-                                            ob.name + "`");
+                                            ob.name + "` (or within contact.distance of it)");
         free_.push_back(f);
     }
 }

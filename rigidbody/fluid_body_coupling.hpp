@@ -22,7 +22,8 @@
 
 namespace chute {
 
-// Static planes a body can hit: the case's `plane` bodies and the domain sides of type wall or slip.
+// Static planes a body can hit: the case's `plane` bodies and the domain sides of type wall or slip, each
+// moved out by contact.distance.
 std::vector<Obstacle> obstacles_of(const CaseConfig& config);
 
 // What moved a free body over the last step (N and N m), for the time series.

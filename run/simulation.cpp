@@ -12,6 +12,8 @@
 
 #include "body_series.hpp"
 #include "contact_log.hpp"
+#include "lumped_comparison.hpp"
+#include "trajectory_summary.hpp"
 #include "coupled_step.hpp"
 #include "case_file.hpp"
 #include "checkpoint.hpp"
@@ -107,6 +109,8 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     BodySeries body_series(grid, options.out_dir, bodies, config, options.restart ? solver.time() : -1.0);
     FieldOutput fields(grid, options.out_dir, options.restart ? solver.step() : -1);
     ContactLog contacts(root && !free_bodies.empty() ? options.out_dir / "contacts.csv" : std::filesystem::path());
+    TrajectorySummary trajectories(config, bodies);
+    if (root && !free_bodies.empty()) write_lumped_comparison(config, bodies, free_bodies, options.out_dir);
     Probes probes(grid, config.probes);
     HaloExchange halo(grid);
     Field2D uc(grid), vc(grid), omega(grid), pressure_pa(grid);
@@ -146,6 +150,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             std::vector<BodyForces> forces = bodies.forces(solver.velocity(), solver.pressure());
             free_bodies.report(forces);
             body_series.append(solver.time(), forces);
+            trajectories.observe(solver.time(), forces);
         }
     };
 
@@ -179,7 +184,10 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
         // One step: predict u*, force it to follow the bodies at t^{n+1}, project (DESIGN.md data flow).
         const StepStats st = advance(solver, bodies, free_bodies, dt);
-        if (!free_bodies.events().empty()) contacts.record(free_bodies.events());
+        if (!free_bodies.events().empty()) {
+            contacts.record(free_bodies.events());
+            trajectories.impacts(free_bodies.events());
+        }
 
         ke = kinetic_energy(grid, solver.velocity());
         div = max_divergence(grid, solver.velocity());
@@ -251,6 +259,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     series.write_hdf5();
     body_series.write_hdf5();
 
+    summary.bodies = trajectories.text();
     summary.time = solver.time();
     summary.kinetic_energy = kinetic_energy(grid, solver.velocity());
     summary.max_divergence = max_divergence(grid, solver.velocity());
@@ -291,7 +300,7 @@ std::string format_summary(const RunSummary& s, long long cells) {
         o << buf;
     }
     std::snprintf(buf, sizeof buf, "final kinetic energy %.6g, max |div u| %.3g\n", s.kinetic_energy, s.max_divergence);
-    o << buf;
+    o << buf << s.bodies;
     return o.str();
 }
 

@@ -40,6 +40,7 @@ struct RunSummary {
     double cell_steps_per_second = 0.0;
     double kinetic_energy = 0.0, max_divergence = 0.0;
     std::filesystem::path last_checkpoint;
+    std::string bodies;  // per free body: fall speed, impacts, rebound height, runout, peak forces
 };
 
 // Runs the case on `comm`; throws RunDiverged, CaseError-like std::runtime_error for bad restarts.
