@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Plots of one Chute run: time series (kinetic energy, divergence, Poisson iterations, probes), snapshots of
 the last field file (speed with streamlines, vorticity, pressure) and, per immersed body, its force
-coefficients against time (body_<name>.png) and the vorticity around it (vorticity_<name>.png).
+coefficients against time (body_<name>.png) and the vorticity around it (vorticity_<name>.png); per free body
+its trajectory, velocity and forces against the dry and Beranger lumped models of the same release
+(trajectory_<name>.png).
 
 Usage: /usr/bin/python3 python/plot_run.py RESULTS_DIR
 Uses Debian's numpy, h5py and matplotlib (call /usr/bin/python3: a pyenv python does not see them).
@@ -144,6 +146,41 @@ def plot_body(run_dir, name, b, fields_file):
     plt.close(fig)
 
 
+def plot_trajectory(run_dir, name, b):
+    """A free body: height and velocity against time with the lumped models, and the forces on it."""
+    lumped_path = os.path.join(run_dir, f"lumped_{name}.csv")
+    lumped = np.genfromtxt(lumped_path, delimiter=",", names=True) if os.path.exists(lumped_path) else None
+    t = b["t"]
+    fig, ax = plt.subplots(3, 1, figsize=(8, 8.5), sharex=True)
+    ax[0].plot(t, b["y"], label="Chute (CFD)")
+    ax[1].plot(t, b["u"], label="u, Chute")
+    ax[1].plot(t, b["v"], label="v, Chute")
+    if lumped is not None and lumped.size:
+        for model, label, style in ((0, "dry", ":"), (1, "Beranger", "--")):
+            k = lumped["model"] == model
+            ax[0].plot(lumped["t"][k], lumped["y"][k], style, label=label)
+            ax[1].plot(lumped["t"][k], lumped["v"][k], style, label=f"v, {label}")
+    ax[0].set_ylabel("y of the centre (m)")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("velocity (m/s)")
+    ax[1].legend(fontsize=7, ncol=2)
+    ax[2].plot(t, b["fy_forcing"], label="hydrodynamic (y)")
+    ax[2].plot(t, b["fy_gravity"] + b["fy_buoyancy"], label="gravity + buoyancy (y)")
+    ax[2].plot(t, b["fy_pressure"], "--", label="pressure (y)")
+    ax[2].plot(t, b["fy_viscous"], "--", label="viscous (y)")
+    values = np.concatenate([b["fy_forcing"], b["fy_gravity"] + b["fy_buoyancy"]])
+    lo, hi = np.percentile(values, [1, 99])
+    pad = 0.2 * (hi - lo) or 1.0
+    ax[2].set_ylim(lo - pad, hi + pad)  # impacts give spikes of many times the weight
+    ax[2].set_ylabel("force (N)")
+    ax[2].legend(fontsize=7, ncol=2)
+    ax[-1].set_xlabel("t (s)")
+    fig.suptitle(f"free body {name}")
+    fig.tight_layout()
+    fig.savefig(os.path.join(run_dir, f"trajectory_{name}.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -154,8 +191,12 @@ def main():
     fields = sorted(glob.glob(os.path.join(run_dir, "fields_*.h5")))
     for path in sorted(glob.glob(os.path.join(run_dir, "body_*.h5"))):
         name = os.path.basename(path)[len("body_"):-len(".h5")]
-        plot_body(run_dir, name, load_timeseries(run_dir, "body_" + name), fields[-1] if fields else None)
+        series = load_timeseries(run_dir, "body_" + name)
+        plot_body(run_dir, name, series, fields[-1] if fields else None)
         written += [f"body_{name}.png", f"vorticity_{name}.png"]
+        if "fy_gravity" in series and np.any(series["fy_gravity"] != 0.0):
+            plot_trajectory(run_dir, name, series)
+            written.append(f"trajectory_{name}.png")
     print("plots: " + ", ".join(os.path.join(run_dir, w) for w in written))
 
 
