@@ -507,6 +507,27 @@ TEST(CaseFile, BodyErrorsNameTheKey) {
                    {"numerics.ibm.stress_probes", "second distance must be greater"});
 }
 
+TEST(CaseFile, FreeBodyKeysAndErrors) {
+    const std::string block = "bodies:\n  block:\n    shape: rectangle\n    centre: [0.5, 0.5]\n    size: [0.2, 0.2]\n";
+    const CaseConfig c = parse_case_text(kMinimal + block + "    density: 2500\n    motion: {type: free, lock_rotation: "
+                                         "true, velocity: [0, -1]}\ncontact: {law: impulse, distance: 0.01}\n");
+    EXPECT_EQ(c.bodies[0].motion.type, MotionType::free);
+    EXPECT_EQ(c.bodies[0].density, 2500.0);
+    EXPECT_EQ(c.bodies[0].motion.locked, (std::array<bool, 3>{false, false, true}));
+    EXPECT_EQ(c.bodies[0].motion.velocity[1], -1.0);
+    EXPECT_EQ(c.contact.law, ReboundLaw::impulse);
+    EXPECT_EQ(c.contact.distance, 0.01);
+    EXPECT_EQ(c.contact.normal_restitution, 0.8);  // Turmel & Locat's value is the default
+    EXPECT_EQ(c.gravity[1], -9.81);
+    expect_message(error_of(kMinimal + block + "    motion: {type: free}\n"),
+                   {"bodies.block.density", "a free body needs its density"});
+    expect_message(error_of(kMinimal + block + "    density: 2500\n"),
+                   {"bodies.block.density", "only free bodies"});
+    expect_message(error_of(kMinimal + block + "    density: -1\n    motion: {type: free}\n"), {"bodies.block.density"});
+    expect_message(error_of(kMinimal + block + "    motion: {type: fixed, lock_x: true}\n"), {"bodies.block.motion.lock_x"});
+    expect_message(error_of(kMinimal + block, {"contact.normal_restitution=1.5"}), {"contact.normal_restitution"});
+}
+
 }  // namespace
 }  // namespace chute
 

@@ -96,3 +96,18 @@ TEST(FreeBodies, SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber) {
     // It falls on the channel's axis (to 1 % of d: the markers are not exactly mirror-symmetric).
     EXPECT_NEAR(run.ibm.bodies()[0].state().centre.x(), 0.01, 0.01 * 0.0025);
 }
+
+// A free body that starts inside an obstacle (or within contact.distance of it) is a case error naming it.
+TEST(FreeBodies, StartInsideAnObstacleIsAnError) {
+    const CaseConfig c = load_case(kExamples + "settling_cylinder/case.yaml",
+                                   {"bodies.disc.centre=[0.01, 0.0015]", "contact.distance=0.001"});
+    FlowSolver solver(c, MPI_COMM_WORLD);
+    ImmersedBoundary ibm(solver.grid(), c);
+    try {
+        FreeBodies free(c, ibm);
+        ADD_FAILURE() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("bodies.disc"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("`bottom`"), std::string::npos) << e.what();
+    }
+}
