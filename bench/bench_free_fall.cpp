@@ -18,19 +18,9 @@
 
 using namespace chute;
 
-int main(int argc, char** argv) {
-    MPI_Init(&argc, &argv);
-    int rank = 0, size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    int steps = 300, warmup = 100;
-    std::string path = std::string(CHUTE_SOURCE_DIR) + "/examples/free_fall_block/case.yaml";
-    for (int k = 1; k < argc; ++k) {
-        const std::string a = argv[k];
-        if (a == "--steps" && k + 1 < argc) steps = std::atoi(argv[++k]);
-        else if (a == "--warmup" && k + 1 < argc) warmup = std::atoi(argv[++k]);
-        else path = a;
-    }
+namespace {
+
+void run(const std::string& path, int steps, int warmup, int rank, int size) {
     const CaseConfig c = load_case(path, {"time.end=100.0"});
     FlowSolver flow(c, MPI_COMM_WORLD);
     ImmersedBoundary ibm(flow.grid(), c);
@@ -66,6 +56,24 @@ int main(int argc, char** argv) {
                     correction * per, 100 * correction / total, bodies * per, 100 * bodies / total, forces * per,
                     100 * forces / total);
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    MPI_Init(&argc, &argv);
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    int steps = 300, warmup = 100;
+    std::string path = std::string(CHUTE_SOURCE_DIR) + "/examples/free_fall_block/case.yaml";
+    for (int k = 1; k < argc; ++k) {
+        const std::string a = argv[k];
+        if (a == "--steps" && k + 1 < argc) steps = std::atoi(argv[++k]);
+        else if (a == "--warmup" && k + 1 < argc) warmup = std::atoi(argv[++k]);
+        else path = a;
+    }
+    run(path, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
     MPI_Finalize();
     return 0;
 }
