@@ -1,5 +1,6 @@
 // chute: the command-line tool.
 //   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT] [--no-plots]
+//             [--sweep key.path=v1,v2,... ...]   one run per combination, in DIR/<key>=<value>,...
 //   chute keys            prints every case-file key (the table of docs/case-file.md)
 #include <CLI/CLI.hpp>
 #include <HYPRE_utilities.h>
@@ -75,6 +76,74 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     return 0;
 }
 
+// A --sweep value "key=v1,v2,...": the key and its values. Commas inside [] or {} belong to a value, so
+// vectors sweep too: bodies.block.centre=[0, 1],[0, 2].
+std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+        throw chute::CaseError("--sweep " + text + ": expected key.path=value1,value2,...");
+    std::vector<std::string> values(1);
+    int depth = 0;
+    for (const char ch : text.substr(eq + 1)) {
+        if (ch == '[' || ch == '{') ++depth;
+        if (ch == ']' || ch == '}') --depth;
+        if (ch == ',' && depth == 0) values.emplace_back();
+        else values.back() += ch;
+    }
+    for (auto& v : values) {
+        v.erase(0, v.find_first_not_of(' '));
+        v.erase(v.find_last_not_of(' ') + 1);
+        if (v.empty()) throw chute::CaseError("--sweep " + text + ": an empty value");
+    }
+    return {text.substr(0, eq), values};
+}
+
+// Runs every combination of the sweeps, one after the other, each in its own folder; the cases are all read
+// (and checked) first, so a bad value stops the sweep before anything runs. sweep.txt gathers the summaries.
+int sweep_command(const std::filesystem::path& case_file, const std::filesystem::path& out_dir,
+                  const std::vector<std::string>& overrides, const std::vector<std::string>& sweeps, bool no_plots) {
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    std::vector<std::vector<std::string>> runs = {{}};  // the --set lists of the combinations
+    for (const std::string& s : sweeps) {
+        const auto [key, values] = parse_sweep(s);
+        std::vector<std::vector<std::string>> next;
+        for (const auto& r : runs)
+            for (const auto& v : values) {
+                next.push_back(r);
+                next.back().push_back(key + "=" + v);
+            }
+        runs = next;
+    }
+    const std::string name = chute::load_case(case_file, overrides).name;
+    const std::filesystem::path base = out_dir.empty() ? std::filesystem::path("results") / name : out_dir;
+    std::vector<std::filesystem::path> folders;
+    for (const auto& r : runs) {
+        std::vector<std::string> all = overrides;
+        all.insert(all.end(), r.begin(), r.end());
+        (void)chute::load_case(case_file, all);  // checks every combination before the first run
+        std::string folder;
+        for (const auto& o : r) folder += (folder.empty() ? "" : ",") + o;
+        for (char& ch : folder)
+            if (ch == '/' || ch == ' ' || ch == '[' || ch == ']' || ch == '{' || ch == '}') ch = '_';
+        folders.push_back(base / folder);
+    }
+    std::string report;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        std::vector<std::string> all = overrides;
+        all.insert(all.end(), runs[k].begin(), runs[k].end());
+        if (rank == 0) std::printf("chute: sweep run %zu of %zu: %s\n", k + 1, runs.size(), folders[k].string().c_str());
+        const int code = run_command(case_file, folders[k], all, "", no_plots);
+        if (rank == 0) {
+            report += "== " + folders[k].filename().string() + "\n" + read_file(folders[k] / "summary.txt") + "\n";
+            chute::write_text_atomically(base / "sweep.txt", report);
+        }
+        if (code != 0) return code;
+    }
+    if (rank == 0) std::printf("chute: sweep of %zu runs done; summaries in %s\n", runs.size(), (base / "sweep.txt").string().c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -95,6 +164,9 @@ int main(int argc, char** argv) {
     run->add_option("--set", overrides, "override a key: --set domain.x.cells=128 (repeatable)");
     run->add_option("--restart", restart, "continue from this checkpoint file");
     run->add_flag("--no-plots", no_plots, "do not make the PNG plots");
+    std::vector<std::string> sweeps;
+    run->add_option("--sweep", sweeps,
+                    "run once per value: --sweep bodies.block.density=2400,2500,2600 (repeatable: every combination)");
     auto* keys = app.add_subcommand("keys", "print every case-file key with its type, default and range");
 
     int code = 0;
@@ -103,7 +175,9 @@ int main(int argc, char** argv) {
         if (*keys) {
             if (rank == 0) std::cout << chute::schema_markdown();
         } else {
-            code = run_command(case_file, out_dir, overrides, restart, no_plots);
+            if (!sweeps.empty() && !restart.empty()) throw chute::CaseError("--sweep and --restart do not go together");
+            code = sweeps.empty() ? run_command(case_file, out_dir, overrides, restart, no_plots)
+                                  : sweep_command(case_file, out_dir, overrides, sweeps, no_plots);
         }
     } catch (const CLI::ParseError& e) {
         code = rank == 0 ? app.exit(e) : 2;

@@ -161,6 +161,29 @@ TEST(Cli, RunsACaseAndWritesEveryOutput) {
     EXPECT_TRUE(latest_checkpoint(dir / "out").has_value());
 }
 
+// --sweep runs one case per value, each in its own folder, and gathers their summaries; a bad value anywhere
+// in the sweep stops it before the first run.
+TEST(Cli, SweepRunsEachValueAndChecksThemAllFirst) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_sweep");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const std::string c = "run '" + (dir / "case.yaml").string() + "' --set time.end=0.05 --out ";
+    const auto r = run_chute(c + "'" + (dir / "out").string() + "' --sweep fluid.viscosity=0.01,0.02 --sweep "
+                                 "'boundaries.top.velocity=[1.0, 0.0],[2.0, 0.0]'", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    for (const char* run : {"fluid.viscosity=0.01,boundaries.top.velocity=_1.0,_0.0_",
+                            "fluid.viscosity=0.02,boundaries.top.velocity=_2.0,_0.0_"})
+        EXPECT_TRUE(fs::exists(dir / "out" / run / "summary.txt")) << run << "\n" << r.output;
+    const std::string sweep = read_text(dir / "out" / "sweep.txt");
+    std::size_t titles = 0;  // one "== <folder>" line per run
+    for (std::size_t at = sweep.find("== "); at != std::string::npos; at = sweep.find("== ", at + 3)) ++titles;
+    EXPECT_EQ(titles, 4u) << sweep;
+    const auto bad = run_chute(c + "'" + (dir / "bad").string() + "' --sweep fluid.viscosity=0.01,-1", dir);
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("fluid.viscosity"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(dir / "bad")) << "no run may start on a bad sweep";
+}
+
 TEST(Cli, BadInputIsRejectedNamingTheKey) {
     if (!single_rank()) GTEST_SKIP() << "starts its own process";
     const fs::path dir = scratch("cli_bad");
