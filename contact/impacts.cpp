@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace chute {
 
@@ -29,6 +30,69 @@ bool hold_on(BodyState& s, const Obstacle& ob, const RigidInertia& m, const Cont
     s.velocity = s.velocity.cwiseProduct(Vec2(m.free(Dof::x), m.free(Dof::y)));
     s.acceleration = s.acceleration.cwiseProduct(Vec2(m.free(Dof::x), m.free(Dof::y)));
     return true;
+}
+
+// The contact point's effective mass along n: 1 / (n . K n), K = diag(1/m) + perp(r) perp(r)^T / I.
+double effective_mass(const BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m) {
+    const Vec2 p = perp(X - s.centre);
+    const double inverse = n.cwiseProduct(m.inverse_mass()).dot(n) + m.inverse_inertia() * p.dot(n) * p.dot(n);
+    return inverse > 0.0 ? 1.0 / inverse : 0.0;
+}
+
+// Accelerations of a body pressed into an obstacle: the held ones plus the spring-dashpot and friction.
+void soft_accelerations(const BodyState& s, const Vec2& held, double held_alpha, const Outline& outline,
+                        const Obstacle& ob, const RigidInertia& m, const ContactConfig& c, Vec2& a, double& alpha) {
+    a = held;
+    alpha = held_alpha;
+    const Gap g = gap(outline, s, ob);
+    if (g.distance >= 0.0) return;
+    const Vec2 n = ob.normal, t = -perp(n);
+    const Vec2 V = s.velocity + s.angular_velocity * perp(g.point - s.centre);
+    const double m_eff = effective_mass(s, g.point, n, m), log_e = std::log(std::max(c.normal_restitution, 1e-6));
+    const double k = m_eff * (std::numbers::pi * std::numbers::pi + log_e * log_e) / (c.duration * c.duration);
+    const double damping = -2.0 * m_eff * log_e / c.duration;
+    // The linear model acts until the overlap closes (its dashpot may pull slightly at the end): that is the
+    // model whose restitution is exp(-pi xi / sqrt(1 - xi^2)); clipping it at zero force rebounds ~1 % faster.
+    const double fn = -k * g.distance - damping * V.dot(n);
+    Vec2 F = fn * n;
+    const double vt = V.dot(t);
+    if (c.friction > 0.0 && fn > 0.0 && std::abs(vt) > 1e-9) F -= std::copysign(c.friction * fn, vt) * t;
+    a += F.cwiseProduct(m.inverse_mass());
+    alpha += cross(g.point - s.centre, F) * m.inverse_inertia();
+}
+
+// Moves a pressed body by dt with the soft law (midpoint sub-steps); stops early if it leaves the obstacle.
+// Returns the time taken.
+double press(BodyState& s, double dt, const Outline& outline, const Obstacle& ob, const RigidInertia& m,
+             const ContactConfig& c) {
+    const Vec2 held = s.acceleration;
+    const double held_alpha = s.angular_acceleration;
+    const int n = std::max(1, static_cast<int>(std::ceil(dt / (c.duration / 100.0))));
+    const double h = dt / n;
+    auto step = [&](const BodyState& from, const BodyState& rate_at, double tau) {
+        Vec2 a;
+        double alpha;
+        soft_accelerations(rate_at, held, held_alpha, outline, ob, m, c, a, alpha);
+        BodyState r = from;
+        r.centre += rate_at.velocity * tau;
+        r.angle += rate_at.angular_velocity * tau;
+        r.velocity += a * tau;
+        r.angular_velocity += alpha * tau;
+        return r;
+    };
+    for (int k = 0; k < n; ++k) {
+        const BodyState mid = step(s, s, 0.5 * h);
+        s = step(s, mid, h);
+        const Gap g = gap(outline, s, ob);
+        if (g.distance > 0.0 && normal_speed(s, g.point, ob.normal) > 0.0) {
+            s.acceleration = held;
+            s.angular_acceleration = held_alpha;
+            return (k + 1) * h;
+        }
+    }
+    s.acceleration = held;
+    s.angular_acceleration = held_alpha;
+    return dt;
 }
 
 }  // namespace
@@ -70,6 +134,35 @@ std::vector<ContactEvent> move_with_contacts(BodyState& s, ContactState& contact
     double done = 0.0;
     while (done < dt) {
         const double remaining = dt - done;
+        if (contact.pressed_on >= 0) {  // soft law: press on until the body leaves or the step ends
+            const Obstacle& ob = obstacles[contact.pressed_on];
+            const double used = press(s, remaining, outline, ob, m, config);
+            done = used >= remaining ? dt : done + used;
+            const bool left = used < remaining || gap(outline, s, ob).distance > 0.0;
+            const bool rests = !left && t + done - contact.pressed_since > 10.0 * config.duration;
+            if (left || rests) {
+                ContactEvent e = contact.touch;
+                e.velocity_after = s.velocity;
+                e.angular_velocity_after = s.angular_velocity;
+                const Vec2 n = ob.normal, tangent = -perp(n);
+                const Vec2 before = e.velocity_before + e.angular_velocity_before * perp(e.point - e.centre);
+                const Gap g = gap(outline, s, ob);
+                const Vec2 after = s.velocity + s.angular_velocity * perp(g.point - s.centre);
+                e.normal_restitution = -after.dot(n) / before.dot(n);
+                e.tangential_restitution = std::abs(before.dot(tangent)) > 1e-12 * std::abs(before.dot(n))
+                                               ? after.dot(tangent) / before.dot(tangent)
+                                               : std::numeric_limits<double>::quiet_NaN();
+                e.rests = rests || after.dot(n) < config.rest_speed;
+                if (e.rests) {
+                    // Settle it on the surface and hold it there as the impulse laws do.
+                    s.centre += -g.distance * n;
+                    contact.resting_on = contact.pressed_on;
+                }
+                contact.pressed_on = -1;
+                events.push_back(e);
+            }
+            continue;
+        }
         if (contact.resting_on >= 0 && !hold_on(s, obstacles[contact.resting_on], m, config))
             contact.resting_on = -1;
         // Sliding that friction stops inside the step: stop there, then hold.
@@ -91,6 +184,20 @@ std::vector<ContactEvent> move_with_contacts(BodyState& s, ContactState& contact
             continue;
         }
         const Obstacle& ob = obstacles[hit];
+        if (config.law == ReboundLaw::soft) {  // open the event; the pressing happens on the next pass
+            ContactEvent& e = contact.touch;
+            e = ContactEvent{};
+            e.time = t + done;
+            e.body = body_name;
+            e.obstacle = ob.name;
+            e.point = gap(outline, s, ob).point;
+            e.centre = s.centre;
+            e.velocity_before = s.velocity;
+            e.angular_velocity_before = s.angular_velocity;
+            contact.pressed_on = hit;
+            contact.pressed_since = t + done;
+            continue;
+        }
         ContactEvent e = rebound(s, gap(outline, s, ob).point, ob.normal, m, config);
         e.time = t + done;
         e.body = body_name;

@@ -75,8 +75,9 @@ struct IbmConfig {
 // ---- Free bodies (rigidbody/) and contact (contact/) ----
 // Rebound laws at an impact (contact/rebound.hpp):
 //   lumped (RocFall's lumped mass, Turmel & Locat 2008): the centre's velocity, v_n' = -Rn v_n, v_t' = Rt v_t;
-//   impulse: the same coefficients on the contact point's velocity, by an impulse that also turns the body.
-enum class ReboundLaw { lumped, impulse };
+//   impulse: the same coefficients on the contact point's velocity, by an impulse that also turns the body;
+//   soft: a spring-dashpot at the contact point over a finite contact time, sub-stepped inside the step.
+enum class ReboundLaw { lumped, impulse, soft };
 
 struct ContactConfig {
     ReboundLaw law = ReboundLaw::lumped;
@@ -85,6 +86,7 @@ struct ContactConfig {
     double rest_speed = 0.01;             // m/s: a slower rebound leaves the body resting on the obstacle
     double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
     double distance = 0.0;                // m: impacts happen at this gap (0: at the surface)
+    double duration = 0.002;              // s: soft law, contact time of one impact
 };
 
 // The lumped trajectory models a run with free bodies writes beside its CFD result (rigidbody/lumped_model):

@@ -497,10 +497,11 @@ std::vector<CaseKey> make_schema() {
         {.path = "contact.law",
          .type = K::choice,
          .default_value = "lumped",
-         .choices = {"lumped", "impulse"},
+         .choices = {"lumped", "impulse", "soft"},
          .meaning = "`lumped` (RocFall's lumped mass): v_n' = -Rn v_n, v_t' = Rt v_t on the centre's velocity, "
                     "spin kept. `impulse`: the same coefficients on the contact point's velocity, through an "
-                    "impulse that also changes the spin."},
+                    "impulse that also changes the spin. `soft`: a linear spring-dashpot at the contact point "
+                    "lasting `duration`, damped to give Rn, with Coulomb `friction` along the surface."},
         {.path = "contact.normal_restitution",
          .type = K::number,
          .default_value = "0.8",
@@ -529,6 +530,13 @@ std::vector<CaseKey> make_schema() {
                     "squarely is stopped by the fluid it squeezes out; below about one cell the squeeze film is "
                     "unresolved (docs/validation.md), so a contact distance of one or two cells stands for the "
                     "unresolved approach. Turmel & Locat's body-fitted mesh needed about 0.1 m."},
+        {.path = "contact.duration",
+         .type = K::number,
+         .default_value = "0.002",
+         .min = above(0.0),
+         .units = "s",
+         .meaning = "Soft law: the duration of one impact (it sets the spring's stiffness; Rn sets its "
+                    "damping). It is sub-stepped in 100 steps whatever the flow's step."},
         {.path = "contact.friction",
          .type = K::number,
          .default_value = "0.0",
@@ -885,12 +893,15 @@ class Reader {
         c.body_force = vector2("fluid.body_force");
         c.gravity = vector2("gravity");
         c.contact.law = to_enum<ReboundLaw>("contact.law", choice("contact.law"),
-                                            {{"lumped", ReboundLaw::lumped}, {"impulse", ReboundLaw::impulse}});
+                                            {{"lumped", ReboundLaw::lumped},
+                                             {"impulse", ReboundLaw::impulse},
+                                             {"soft", ReboundLaw::soft}});
         c.contact.normal_restitution = number("contact.normal_restitution");
         c.contact.tangential_restitution = number("contact.tangential_restitution");
         c.contact.rest_speed = number("contact.rest_speed");
         c.contact.friction = number("contact.friction");
         c.contact.distance = number("contact.distance");
+        c.contact.duration = number("contact.duration");
         c.lumped.drag_coefficient = number("lumped.drag_coefficient");
         c.lumped.added_mass_coefficient = number("lumped.added_mass_coefficient");
 
