@@ -46,7 +46,7 @@ std::vector<std::pair<long, std::filesystem::path>> list_checkpoints(const std::
 }  // namespace
 
 void write_checkpoint(const Grid& grid, const std::filesystem::path& path, const CheckpointHeader& header,
-                      const std::vector<CheckpointField>& fields) {
+                      const std::vector<CheckpointField>& fields, const std::vector<CheckpointArray>& arrays) {
     std::vector<std::vector<double>> global;
     global.reserve(fields.size());
     for (const CheckpointField& f : fields)  // collective: every rank gathers every field in the same order
@@ -70,9 +70,16 @@ void write_checkpoint(const Grid& grid, const std::filesystem::path& path, const
                 file.set_int_attribute(name, "extra_x", f.extra_x);
                 file.set_int_attribute(name, "extra_y", f.extra_y);
             }
+            for (const CheckpointArray& a : arrays) file.write("arrays/" + a.name, a.values);
             file.close();
         });
     });
+}
+
+std::optional<std::vector<double>> read_checkpoint_array(const std::filesystem::path& path, const std::string& name) {
+    Hdf5File file = Hdf5File::open_read(path);
+    if (!file.has("arrays/" + name)) return std::nullopt;
+    return file.read("arrays/" + name);
 }
 
 std::pair<std::vector<double>, std::vector<double>> read_checkpoint_lines(const std::filesystem::path& path) {

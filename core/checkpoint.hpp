@@ -7,6 +7,7 @@
 //   /grid/y_lines    the ny + 1 y grid lines
 //   /fields/<name>   each field as a global 2D dataset of (ny + extra_y) x (nx + extra_x) values,
 //                    with attributes extra_x and extra_y
+//   /arrays/<name>   small 1D arrays the same on every rank (the state of free bodies)
 // Values are stored as IEEE doubles, so a round trip is exact.
 #include <filesystem>
 #include <optional>
@@ -25,6 +26,11 @@ struct CheckpointField {
     int extra_x = 0, extra_y = 0;  // 1: include the boundary face column (row), as in gather_global
 };
 
+struct CheckpointArray {
+    std::string name;
+    std::vector<double> values;
+};
+
 struct CheckpointHeader {
     long step = 0;
     double time = 0.0;
@@ -35,7 +41,10 @@ struct CheckpointHeader {
 // Collective. Writes `path` atomically (path.tmp, then rename): an older file of that name stays intact
 // if anything fails. Every rank throws std::runtime_error if the write fails.
 void write_checkpoint(const Grid& grid, const std::filesystem::path& path, const CheckpointHeader& header,
-                      const std::vector<CheckpointField>& fields);
+                      const std::vector<CheckpointField>& fields, const std::vector<CheckpointArray>& arrays = {});
+
+// Not collective: the array /arrays/<name>, or nothing if the checkpoint has none of that name.
+std::optional<std::vector<double>> read_checkpoint_array(const std::filesystem::path& path, const std::string& name);
 
 // Collective. Every rank opens the file read-only and reads its own part of each field (ghost slot at
 // i = nx / j = ny included where the field has an extra column / row and the patch touches that side).

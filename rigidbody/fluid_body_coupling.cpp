@@ -136,4 +136,64 @@ void FreeBodies::report(std::vector<BodyForces>& forces) const {
     }
 }
 
+namespace {
+
+// The layout of a free body's checkpoint array; one list so that saving and restoring cannot disagree.
+template <class Visit>
+void each_value(Visit&& v, BodyState& s, Vec2& acceleration, double& angular_acceleration, ContactState& c,
+                EnclosedMomentum& P, double& momentum_known) {
+    for (double* x : {&s.centre.x(), &s.centre.y(), &s.angle, &s.velocity.x(), &s.velocity.y(),
+                      &s.angular_velocity, &s.acceleration.x(), &s.acceleration.y(), &s.angular_acceleration,
+                      &acceleration.x(), &acceleration.y(), &angular_acceleration, &P.linear.x(), &P.linear.y(),
+                      &P.angular, &c.pressed_since, &c.touch.time, &c.touch.point.x(), &c.touch.point.y(),
+                      &c.touch.centre.x(), &c.touch.centre.y(), &c.touch.velocity_before.x(),
+                      &c.touch.velocity_before.y(), &c.touch.angular_velocity_before, &momentum_known})
+        v(*x);
+    double resting = c.resting_on, pressed = c.pressed_on;
+    v(resting);
+    v(pressed);
+    c.resting_on = static_cast<int>(resting);
+    c.pressed_on = static_cast<int>(pressed);
+}
+
+}  // namespace
+
+std::vector<CheckpointArray> FreeBodies::checkpoint_arrays() const {
+    std::vector<CheckpointArray> out;
+    for (const Free& f : free_) {
+        Free copy = f;
+        BodyState s = ibm_.bodies()[f.index].state();
+        double known = momentum_known_ ? 1.0 : 0.0;
+        CheckpointArray a{"free_body_" + ibm_.bodies()[f.index].name(), {}};
+        each_value([&](double& x) { a.values.push_back(x); }, s, copy.acceleration, copy.angular_acceleration,
+                   copy.contact, copy.momentum, known);
+        out.push_back(std::move(a));
+    }
+    return out;
+}
+
+void FreeBodies::restore(const std::filesystem::path& checkpoint) {
+    for (Free& f : free_) {
+        Body& body = ibm_.body(f.index);
+        const auto values = read_checkpoint_array(checkpoint, "free_body_" + body.name());
+        if (!values)
+            throw std::runtime_error("checkpoint '" + checkpoint.string() + "' has no state for the free body `" +
+                                     body.name() + "` (written by a run without it?)");
+        BodyState s = body.state();
+        double known = 0.0;
+        std::size_t k = 0, count = 0;
+        each_value([&](double&) { ++count; }, s, f.acceleration, f.angular_acceleration, f.contact, f.momentum, known);
+        if (values->size() != count)
+            throw std::runtime_error("checkpoint '" + checkpoint.string() + "': the state of free body `" +
+                                     body.name() + "` has " + std::to_string(values->size()) + " values, expected " +
+                                     std::to_string(count));
+        each_value([&](double& x) { x = (*values)[k++]; }, s, f.acceleration, f.angular_acceleration, f.contact,
+                   f.momentum, known);
+        f.contact.touch.body = body.name();
+        if (f.contact.pressed_on >= 0) f.contact.touch.obstacle = obstacles_[f.contact.pressed_on].name;
+        momentum_known_ = known != 0.0;
+        body.set_state(s);
+    }
+}
+
 }  // namespace chute

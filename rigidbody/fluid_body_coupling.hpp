@@ -13,9 +13,11 @@
 //                     (m + C_V m_f) a = F_h + (m - m_f) g + C_V m_f a*,   a* the predicted acceleration,
 //                   and the motion over the step with a held, impacts located inside it (contact/).
 // The pressure is dynamic, so buoyancy -m_f g is added explicitly (m_f = rho_f V).
+#include <filesystem>
 #include <vector>
 
 #include "case_config.hpp"
+#include "checkpoint.hpp"
 #include "enclosed_momentum.hpp"
 #include "immersed_boundary.hpp"
 #include "impacts.hpp"
@@ -50,6 +52,11 @@ public:
     void report(std::vector<BodyForces>& forces) const;
     const std::vector<ContactEvent>& events() const { return events_; }  // this step's impacts
     const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+
+    // Everything a restart needs, one array per free body ("free_body_<name>"), and its reading back:
+    // state, held accelerations, contact state and the enclosed fluid momentum P^n.
+    std::vector<CheckpointArray> checkpoint_arrays() const;
+    void restore(const std::filesystem::path& checkpoint);
 
 private:
     struct Free {

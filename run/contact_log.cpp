@@ -1,15 +1,25 @@
 #include "contact_log.hpp"
 
 #include <cstdio>
+#include <fstream>
+#include <string>
 
 #include "hdf5_file.hpp"
 
 namespace chute {
 
-ContactLog::ContactLog(std::filesystem::path file) : file_(std::move(file)) {
+ContactLog::ContactLog(std::filesystem::path file, double restart_time) : file_(std::move(file)) {
     text_ = "t,body,obstacle,x,y,x_centre,y_centre,u_before,v_before,omega_before,u_after,v_after,omega_after,normal_restitution,"
             "tangential_restitution,rests\n";
-    if (!file_.empty()) write_text_atomically(file_, text_);
+    if (file_.empty()) return;
+    if (restart_time >= 0.0 && std::filesystem::exists(file_)) {
+        std::ifstream in(file_);
+        std::string line;
+        std::getline(in, line);  // header
+        while (std::getline(in, line))
+            if (!line.empty() && std::stod(line.substr(0, line.find(','))) <= restart_time) text_ += line + "\n";
+    }
+    write_text_atomically(file_, text_);
 }
 
 void ContactLog::record(const std::vector<ContactEvent>& events) {

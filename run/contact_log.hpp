@@ -13,8 +13,9 @@ namespace chute {
 
 class ContactLog {
 public:
-    // An empty path (ranks other than 0) records nothing.
-    explicit ContactLog(std::filesystem::path file);
+    // An empty path (ranks other than 0) records nothing. restart_time >= 0: a restarted run keeps the
+    // events of an existing log up to that time.
+    ContactLog(std::filesystem::path file, double restart_time);
     void record(const std::vector<ContactEvent>& events);
 
 private:

@@ -82,9 +82,6 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         throw CaseError(e.what());
     }
     FreeBodies& free_bodies = *free_ptr;
-    if (options.restart && !free_bodies.empty())
-        throw CaseError("restarting a run with free bodies is not supported yet: their state is not in the "
-                        "checkpoint; run it from the start");
 
     if (root) std::filesystem::create_directories(options.out_dir);
     MPI_Barrier(comm);
@@ -102,15 +99,18 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         solver.set_grid_lines(xl, yl);
         const CheckpointHeader h = read_checkpoint(grid, *options.restart, checkpoint_fields(solver));
         solver.restore(h.step, h.time, h.dt_previous);
+        free_bodies.restore(*options.restart);
     }
     bodies.move_to(solver.time());
 
     TimeSeries series(grid, options.out_dir, timeseries_columns(config), options.restart ? solver.time() : -1.0);
     BodySeries body_series(grid, options.out_dir, bodies, config, options.restart ? solver.time() : -1.0);
     FieldOutput fields(grid, options.out_dir, options.restart ? solver.step() : -1);
-    ContactLog contacts(root && !free_bodies.empty() ? options.out_dir / "contacts.csv" : std::filesystem::path());
-    TrajectorySummary trajectories(config, bodies);
-    if (root && !free_bodies.empty()) write_lumped_comparison(config, bodies, free_bodies, options.out_dir);
+    ContactLog contacts(root && !free_bodies.empty() ? options.out_dir / "contacts.csv" : std::filesystem::path(),
+                        options.restart ? solver.time() : -1.0);
+    TrajectorySummary trajectories(config, bodies);  // after a restart: of the part run since
+    if (root && !free_bodies.empty() && !options.restart)
+        write_lumped_comparison(config, bodies, free_bodies, options.out_dir);
     Probes probes(grid, config.probes);
     HaloExchange halo(grid);
     Field2D uc(grid), vc(grid), omega(grid), pressure_pa(grid);
@@ -131,7 +131,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     auto write_checkpoint_now = [&] {
         const auto path = checkpoint_path(options.out_dir, solver.step());
         write_checkpoint(grid, path, {solver.step(), solver.time(), solver.previous_dt(), solver.previous_dt()},
-                         checkpoint_fields(solver));
+                         checkpoint_fields(solver), free_bodies.checkpoint_arrays());
         prune_checkpoints(options.out_dir, config.checkpoints_kept);
         return path;
     };
