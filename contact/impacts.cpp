@@ -27,8 +27,8 @@ bool hold_on(BodyState& s, const Obstacle& ob, const RigidInertia& m, const Cont
     s.acceleration = at * t;
     s.angular_velocity = 0.0;
     s.angular_acceleration = 0.0;
-    s.velocity = s.velocity.cwiseProduct(Vec2(m.free(Dof::x), m.free(Dof::y)));
-    s.acceleration = s.acceleration.cwiseProduct(Vec2(m.free(Dof::x), m.free(Dof::y)));
+    s.velocity = s.velocity.cwiseProduct(m.free_translation());
+    s.acceleration = s.acceleration.cwiseProduct(m.free_translation());
     return true;
 }
 
@@ -144,14 +144,11 @@ std::vector<ContactEvent> move_with_contacts(BodyState& s, ContactState& contact
                 ContactEvent e = contact.touch;
                 e.velocity_after = s.velocity;
                 e.angular_velocity_after = s.angular_velocity;
-                const Vec2 n = ob.normal, tangent = -perp(n);
+                const Vec2 n = ob.normal;
                 const Vec2 before = e.velocity_before + e.angular_velocity_before * perp(e.point - e.centre);
                 const Gap g = gap(outline, s, ob);
                 const Vec2 after = s.velocity + s.angular_velocity * perp(g.point - s.centre);
-                e.normal_restitution = -after.dot(n) / before.dot(n);
-                e.tangential_restitution = std::abs(before.dot(tangent)) > 1e-12 * std::abs(before.dot(n))
-                                               ? after.dot(tangent) / before.dot(tangent)
-                                               : std::numeric_limits<double>::quiet_NaN();
+                set_effective_restitution(e, before, after, n);
                 e.rests = rests || after.dot(n) < config.rest_speed;
                 if (e.rests) {
                     // Settle it on the surface and hold it there as the impulse laws do.

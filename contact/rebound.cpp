@@ -13,6 +13,14 @@ Vec2 point_velocity(const BodyState& s, const Vec2& X) { return s.velocity + s.a
 
 }  // namespace
 
+void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& after, const Vec2& n) {
+    const Vec2 t = -perp(n);
+    const double Vn = before.dot(n), Vt = before.dot(t);
+    e.normal_restitution = -after.dot(n) / Vn;
+    e.tangential_restitution = std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt
+                                                                     : std::numeric_limits<double>::quiet_NaN();
+}
+
 ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m, const ContactConfig& c) {
     ContactEvent e;
     e.point = X;
@@ -26,8 +34,7 @@ ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidIner
     if (c.law == ReboundLaw::lumped) {
         const double vn = s.velocity.dot(n), vt = s.velocity.dot(t);
         const Vec2 after = -c.normal_restitution * vn * n + c.tangential_restitution * vt * t;
-        // Locked translations stay locked.
-        s.velocity = Vec2(m.free(Dof::x) ? after.x() : 0.0, m.free(Dof::y) ? after.y() : 0.0);
+        s.velocity = after.cwiseProduct(m.free_translation());  // locked translations stay locked
     } else {
         const Vec2 target = -c.normal_restitution * Vn * n + c.tangential_restitution * Vt * t;
         const Vec2 p = perp(X - s.centre);
@@ -41,10 +48,7 @@ ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidIner
 
     e.velocity_after = s.velocity;
     e.angular_velocity_after = s.angular_velocity;
-    const Vec2 W = point_velocity(s, X);
-    e.normal_restitution = -W.dot(n) / Vn;
-    e.tangential_restitution = std::abs(Vt) > 1e-12 * std::abs(Vn) ? W.dot(t) / Vt
-                                                                     : std::numeric_limits<double>::quiet_NaN();
+    set_effective_restitution(e, V, point_velocity(s, X), n);
     return e;
 }
 

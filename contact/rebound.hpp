@@ -26,6 +26,9 @@ struct ContactEvent {
     bool rests = false;  // the rebound was slower than the rest speed: the body now rests on the obstacle
 };
 
+// Fills the event's effective coefficients from the contact point's velocity before and after the impact.
+void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& after, const Vec2& n);
+
 // Applies the case's rebound law at the impact point X (world) of an obstacle with normal n. Returns the event
 // (time, names and `rests` are left for the caller).
 ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m, const ContactConfig& c);

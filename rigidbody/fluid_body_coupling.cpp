@@ -39,7 +39,7 @@ FreeBodies::FreeBodies(const CaseConfig& config, ImmersedBoundary& ibm)
         // First prediction: gravity and buoyancy against the body's and the virtual mass.
         const double cv = config.ibm.virtual_mass;
         f.acceleration = (f.inertia.mass - f.fluid_mass) * g / (f.inertia.mass + cv * f.fluid_mass);
-        f.acceleration = f.acceleration.cwiseProduct(Vec2(f.inertia.free(Dof::x), f.inertia.free(Dof::y)));
+        f.acceleration = f.acceleration.cwiseProduct(f.inertia.free_translation());
         for (const Obstacle& ob : obstacles_)
             if (gap(body.outline(), body.state(), ob).distance < 0.0)
                 throw std::invalid_argument("bodies." + body.name() + ": the body starts inside the obstacle `" +
@@ -98,7 +98,7 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         const Vec2 force = out.hydrodynamic.force + out.gravity.force + out.buoyancy.force;
         BodyState s = f.start;
         s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
-        s.acceleration = s.acceleration.cwiseProduct(Vec2(f.inertia.free(Dof::x), f.inertia.free(Dof::y)));
+        s.acceleration = s.acceleration.cwiseProduct(f.inertia.free_translation());
         s.angular_acceleration = f.inertia.free(Dof::rotation)
                                      ? (out.hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
                                            (f.inertia.inertia + cv * f.fluid_inertia)
@@ -106,15 +106,10 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         f.acceleration = s.acceleration;
         f.angular_acceleration = s.angular_acceleration;
         f.contact = f.contact_at_start;
+        // Contact force over the step: what the impacts (and a resting reaction) changed against free flight.
+        const BodyState free_flight = drift(s, dt);
         const auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia, obstacles_,
                                            config_.contact);
-        // Contact force over the step: what the impacts changed, beyond the held acceleration.
-        const BodyState free_flight = drift([&] {
-            BodyState a = f.start;
-            a.acceleration = f.acceleration;
-            a.angular_acceleration = f.angular_acceleration;
-            return a;
-        }(), dt);
         out.contact.force = f.inertia.mass * (s.velocity - free_flight.velocity) / dt;
         out.contact.torque = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity) / dt;
         events_.insert(events_.end(), ev.begin(), ev.end());

@@ -19,6 +19,8 @@ struct RigidInertia {
     std::array<bool, 3> locked{false, false, false};  // indexed by Dof
 
     bool free(Dof d) const { return !locked[static_cast<int>(d)]; }
+    // 1 along each free translation, 0 along a locked one: multiply a velocity or acceleration by it.
+    Vec2 free_translation() const { return {free(Dof::x) ? 1.0 : 0.0, free(Dof::y) ? 1.0 : 0.0}; }
     // 1/m for each translation and 1/I for rotation, 0 where the degree of freedom is locked.
     Vec2 inverse_mass() const { return {free(Dof::x) ? 1.0 / mass : 0.0, free(Dof::y) ? 1.0 / mass : 0.0}; }
     double inverse_inertia() const { return free(Dof::rotation) ? 1.0 / inertia : 0.0; }

@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "case_file.hpp"
@@ -11,6 +12,15 @@
 #include "coupled_step.hpp"
 
 namespace chute::validation {
+
+inline const std::string kExamples = std::string(CHUTE_SOURCE_DIR) + "/examples/";
+
+// Rank 0 of the run prints what a test measured.
+inline bool root() {
+    int r = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    return r == 0;
+}
 
 struct ForceSample {
     double t = 0.0;

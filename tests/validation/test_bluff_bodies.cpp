@@ -15,14 +15,6 @@ using namespace chute::validation;
 
 namespace {
 
-const std::string kExamples = std::string(CHUTE_SOURCE_DIR) + "/examples/";
-
-bool root() {
-    int r = 0;
-    MPI_Comm_rank(MPI_COMM_WORLD, &r);
-    return r == 0;
-}
-
 struct Shedding {
     double cd_mean, cd_mean_surface, cl_amplitude, cl_rms, strouhal;
 };

@@ -12,8 +12,6 @@ using namespace chute::validation;
 
 namespace {
 
-const std::string kExamples = std::string(CHUTE_SOURCE_DIR) + "/examples/";
-
 struct Coefficients {
     double cd_forcing, cl_forcing, cd_surface, cl_surface, cd_pressure, cd_viscous, delta_p, slip;
 };

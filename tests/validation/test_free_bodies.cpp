@@ -11,15 +11,7 @@ using namespace chute::validation;
 
 namespace {
 
-const std::string kExamples = std::string(CHUTE_SOURCE_DIR) + "/examples/";
-
-bool root() {
-    int r = 0;
-    MPI_Comm_rank(MPI_COMM_WORLD, &r);
-    return r == 0;
-}
-
-// A disc of diameter 0.1 m at the middle of a closed 1 m box of water-like fluid, 32 cells across it.
+// A disc of diameter 0.1 m at the middle of a closed 0.5 m box (nu = 1e-4), 32 cells across it.
 CaseConfig disc_in_box(double density) {
     return load_case(kExamples + "settling_cylinder/case.yaml",
                      {"domain.x={start: 0.0, end: 0.5, cells: 160}", "domain.y={start: 0.0, end: 0.5, cells: 160}",
