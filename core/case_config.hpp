@@ -96,6 +96,20 @@ struct LumpedConfig {
     double added_mass_coefficient = 0.5;
 };
 
+// ---- Turbulence (turbulence/) ----
+// laminar: nu only. k_epsilon: standard k-epsilon (Launder & Spalding 1974) with log-law wall functions on
+// no-slip sides and immersed surfaces; nu_t = C_mu k^2 / eps enters the momentum equation.
+enum class TurbulenceModelType { laminar, k_epsilon };
+
+struct TurbulenceConfig {
+    TurbulenceModelType model = TurbulenceModelType::laminar;
+    double intensity = 0.05;        // I: inflow and initial k = 3/2 (I U)^2
+    double length_scale = 0.1;      // m: inflow and initial eps = C_mu^{3/4} k^{3/2} / l
+    double velocity_scale = 0.0;    // m/s: U of the initial k; 0: the largest inflow or initial speed
+    double production_limit = 10.0; // P_k <= limit * eps (0: no limiter)
+    double image_distance = 2.0;    // cells: where wall functions sample the flow beside an immersed surface
+};
+
 enum class ConvectionScheme { central, van_leer, koren };
 enum class InitialCondition { uniform, taylor_green };
 
@@ -119,6 +133,7 @@ struct CaseConfig {
     IbmConfig ibm;
     ContactConfig contact;
     LumpedConfig lumped;
+    TurbulenceConfig turbulence;
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;

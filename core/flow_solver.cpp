@@ -38,6 +38,7 @@ FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config
                                                config_.poisson_max_iterations);
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);
     p_ = p_old_ = phi_ = source_ = Field2D(*grid_);
+    eddy_ = EddyViscosity(*grid_);
     set_initial_condition();
 }
 
@@ -92,13 +93,17 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
 
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
-    const auto limits = time_step_limits(*grid_, vel_, config_.viscosity, config_.cfl, config_.diffusion_number);
+    const double nu = config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
+    const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number);
     return std::min(limits.stable(), config_.max_dt);
 }
 
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
     convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs);
-    add_diffusion(*grid_, config_.viscosity, vel, bc_->u_first(), bc_->v_first(), rhs);
+    if (eddy_on_)
+        add_viscous_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
+    else
+        add_diffusion(*grid_, config_.viscosity, vel, bc_->u_first(), bc_->v_first(), rhs);
 }
 
 void FlowSolver::predict_velocity(double dt, double r) {

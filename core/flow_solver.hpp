@@ -23,6 +23,7 @@
 #include "field.hpp"
 #include "halo_exchange.hpp"
 #include "poisson_solver.hpp"
+#include "viscous_stress.hpp"
 
 namespace chute {
 
@@ -34,6 +35,7 @@ struct StepStats {
     double seconds_poisson = 0.0;    // right-hand side, hypre solve
     double seconds_correction = 0.0; // gradient correction, halo exchange
     double seconds_forcing = 0.0;    // immersed-boundary forcing between predict() and project()
+    double seconds_turbulence = 0.0; // turbulence model update after the step (turbulence/)
 };
 
 class FlowSolver {
@@ -51,6 +53,14 @@ public:
     StepStats project();
     // The step advance() would take: min of the CFL and diffusion limits, max_dt, or the fixed dt.
     double next_dt() const;
+    // A turbulence model writes its eddy viscosity here (turbulence/); from then on the momentum equation
+    // uses div[(nu + nu_t)(grad u + grad u^T)] and the diffusion limit of the step counts nu + max nu_t.
+    EddyViscosity& eddy_viscosity() {
+        eddy_on_ = true;
+        return eddy_;
+    }
+    bool turbulent() const { return eddy_on_; }
+    const EddyViscosity& eddy_viscosity() const { return eddy_; }
 
     const Grid& grid() const { return *grid_; }
     const CaseConfig& config() const { return config_; }
@@ -85,6 +95,8 @@ private:
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
     StepStats pending_;  // the predict() half of the step being taken
+    EddyViscosity eddy_;
+    bool eddy_on_ = false;
     bool pressure_history_ = false;  // p_old_ holds p^{n-1} (false on the first step and after a grid change)
     double time_ = 0.0, dt_previous_ = 0.0;
     long step_ = 0;

@@ -5,7 +5,8 @@
 
 namespace chute {
 
-StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, FreeBodies& free_bodies, double dt) {
+StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, FreeBodies& free_bodies, double dt,
+                  KEpsilon* turbulence) {
     using clock = std::chrono::steady_clock;
     const double t = flow.time();
     if (dt <= 0.0) dt = std::min(flow.next_dt(), free_bodies.max_dt(flow.config().cfl));
@@ -22,6 +23,11 @@ StepStats advance(FlowSolver& flow, ImmersedBoundary& bodies, FreeBodies& free_b
     if (!free_bodies.empty()) free_bodies.correct(t, dt, flow.velocity());
     seconds_bodies += std::chrono::duration<double>(clock::now() - start).count();
     stats.seconds_forcing = seconds_bodies;
+    if (turbulence) {
+        start = clock::now();
+        turbulence->update(dt);
+        stats.seconds_turbulence = std::chrono::duration<double>(clock::now() - start).count();
+    }
     return stats;
 }
 

@@ -32,13 +32,18 @@ namespace {
 using clock = std::chrono::steady_clock;
 double since(clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); }
 
-std::vector<CheckpointField> checkpoint_fields(FlowSolver& s) {
-    return {{"u", &s.velocity().u, 1, 0},
-            {"v", &s.velocity().v, 0, 1},
-            {"p", &s.pressure(), 0, 0},
-            {"p_old", &s.previous_pressure(), 0, 0},
-            {"rhs_old_u", &s.previous_rhs().u, 1, 0},
-            {"rhs_old_v", &s.previous_rhs().v, 0, 1}};
+std::vector<CheckpointField> checkpoint_fields(FlowSolver& s, KEpsilon* turbulence) {
+    std::vector<CheckpointField> f = {{"u", &s.velocity().u, 1, 0},
+                                      {"v", &s.velocity().v, 0, 1},
+                                      {"p", &s.pressure(), 0, 0},
+                                      {"p_old", &s.previous_pressure(), 0, 0},
+                                      {"rhs_old_u", &s.previous_rhs().u, 1, 0},
+                                      {"rhs_old_v", &s.previous_rhs().v, 0, 1}};
+    if (turbulence) {
+        f.push_back({"k", &turbulence->k(), 0, 0});
+        f.push_back({"epsilon", &turbulence->epsilon(), 0, 0});
+    }
+    return f;
 }
 
 std::vector<std::string> timeseries_columns(const CaseConfig& c) {
@@ -82,6 +87,14 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         throw CaseError(e.what());
     }
     FreeBodies& free_bodies = *free_ptr;
+    std::unique_ptr<KEpsilon> turbulence;
+    if (config.turbulence.model == TurbulenceModelType::k_epsilon) {
+        try {
+            turbulence = std::make_unique<KEpsilon>(config, solver, bodies);
+        } catch (const std::invalid_argument& e) {
+            throw CaseError(e.what());
+        }
+    }
 
     if (root) std::filesystem::create_directories(options.out_dir);
     MPI_Barrier(comm);
@@ -97,11 +110,12 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
                                      " does not match the case grid " + std::to_string(grid.global_nx()) + "x" +
                                      std::to_string(grid.global_ny()));
         solver.set_grid_lines(xl, yl);
-        const CheckpointHeader h = read_checkpoint(grid, *options.restart, checkpoint_fields(solver));
+        const CheckpointHeader h = read_checkpoint(grid, *options.restart, checkpoint_fields(solver, turbulence.get()));
         solver.restore(h.step, h.time, h.dt_previous);
         free_bodies.restore(*options.restart);
     }
     bodies.move_to(solver.time());
+    if (turbulence && options.restart) turbulence->restored();
 
     TimeSeries series(grid, options.out_dir, timeseries_columns(config), options.restart ? solver.time() : -1.0);
     BodySeries body_series(grid, options.out_dir, bodies, config, options.restart ? solver.time() : -1.0);
@@ -125,13 +139,19 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     auto write_fields = [&] {
         cell_centred_velocity(grid, solver.velocity(), uc, vc);
         vorticity(grid, solver.velocity(), omega);
-        fields.write(solver.step(), solver.time(),
-                     {{"u", &uc}, {"v", &vc}, {"p", &pressure_in_pascals()}, {"vorticity", &omega}});
+        std::vector<NamedField> out = {
+            {"u", &uc}, {"v", &vc}, {"p", &pressure_in_pascals()}, {"vorticity", &omega}};
+        if (turbulence) {
+            out.push_back({"k", &turbulence->k()});
+            out.push_back({"epsilon", &turbulence->epsilon()});
+            out.push_back({"nu_t", &turbulence->eddy_viscosity()});
+        }
+        fields.write(solver.step(), solver.time(), out);
     };
     auto write_checkpoint_now = [&] {
         const auto path = checkpoint_path(options.out_dir, solver.step());
         write_checkpoint(grid, path, {solver.step(), solver.time(), solver.previous_dt(), solver.previous_dt()},
-                         checkpoint_fields(solver), free_bodies.checkpoint_arrays());
+                         checkpoint_fields(solver, turbulence.get()), free_bodies.checkpoint_arrays());
         prune_checkpoints(options.out_dir, config.checkpoints_kept);
         return path;
     };
@@ -171,7 +191,8 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     const auto loop_start = clock::now();
     auto last_progress = loop_start;
     const double start_time = solver.time();
-    double t_momentum = 0, t_poisson = 0, t_correction = 0, t_output = 0, t_forcing = 0, iterations = 0;
+    double t_momentum = 0, t_poisson = 0, t_correction = 0, t_output = 0, t_forcing = 0, t_turbulence = 0,
+           iterations = 0;
     summary.seconds_per_step_min = std::numeric_limits<double>::infinity();
     double ke = 0.0, div = 0.0, first_dt = 0.0;
 
@@ -183,7 +204,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         if (dt >= remaining) dt = remaining;
         else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
         // One step: predict u*, force it to follow the bodies at t^{n+1}, project (DESIGN.md data flow).
-        const StepStats st = advance(solver, bodies, free_bodies, dt);
+        const StepStats st = advance(solver, bodies, free_bodies, dt, turbulence.get());
         if (!free_bodies.events().empty()) {
             contacts.record(free_bodies.events());
             trajectories.impacts(free_bodies.events());
@@ -194,10 +215,13 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         // A blow-up also shows as a time step that collapses (the CFL limit follows the growing speed).
         if (first_dt == 0.0) first_dt = st.dt;
         const bool dt_collapsed = !config.fixed_dt && st.dt < 1e-6 * first_dt;
-        if (!std::isfinite(ke) || !std::isfinite(div) || div * st.dt > config.divergence_limit || dt_collapsed) {
+        const std::optional<std::string> turbulence_problem = turbulence ? turbulence->check() : std::nullopt;
+        if (!std::isfinite(ke) || !std::isfinite(div) || div * st.dt > config.divergence_limit || dt_collapsed ||
+            turbulence_problem) {
             std::ostringstream msg;
             msg << "run diverged at step " << solver.step() << ", t = " << solver.time() << ": ";
-            if (!std::isfinite(ke)) msg << "kinetic energy is " << ke;
+            if (turbulence_problem) msg << *turbulence_problem;
+            else if (!std::isfinite(ke)) msg << "kinetic energy is " << ke;
             else if (dt_collapsed) msg << "the time step fell to " << st.dt << " s, a millionth of the first step's "
                                        << first_dt << " s (the velocity is blowing up)";
             else msg << "max |div u| dt = " << div * st.dt << " exceeds numerics.divergence_limit = "
@@ -230,6 +254,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         t_correction += st.seconds_correction;
         t_output += out_seconds;
         t_forcing += st.seconds_forcing;
+        t_turbulence += st.seconds_turbulence;
         iterations += st.poisson_iterations;
         summary.seconds_per_step_min = std::min(summary.seconds_per_step_min, step_seconds);
         summary.seconds_per_step_max = std::max(summary.seconds_per_step_max, step_seconds);
@@ -271,6 +296,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         summary.share_correction = t_correction / total;
         summary.share_output = t_output / total;
         summary.share_forcing = t_forcing / total;
+        summary.share_turbulence = t_turbulence / total;
         summary.mean_poisson_iterations = iterations / summary.steps;
         summary.cell_steps_per_second = static_cast<double>(grid.global_cells()) * summary.steps / total;
     } else {
@@ -292,9 +318,10 @@ std::string format_summary(const RunSummary& s, long long cells) {
         o << buf;
         std::snprintf(buf, sizeof buf,
                       "shares: momentum %.0f %%, body forcing %.1f %%, poisson %.0f %% (%.1f iterations/step), "
-                      "projection %.0f %%, outputs and body forces %.0f %%\n",
+                      "projection %.0f %%, turbulence %.1f %%, outputs and body forces %.0f %%\n",
                       100 * s.share_momentum, 100 * s.share_forcing, 100 * s.share_poisson,
-                      s.mean_poisson_iterations, 100 * s.share_correction, 100 * s.share_output);
+                      s.mean_poisson_iterations, 100 * s.share_correction, 100 * s.share_turbulence,
+                      100 * s.share_output);
         o << buf;
         std::snprintf(buf, sizeof buf, "speed: %.3g cell-steps per second\n", s.cell_steps_per_second);
         o << buf;

@@ -35,7 +35,8 @@ struct RunSummary {
     double time = 0.0;          // final simulated time
     double wall_seconds = 0.0;  // time loop only
     double seconds_per_step_mean = 0.0, seconds_per_step_min = 0.0, seconds_per_step_max = 0.0;
-    double share_poisson = 0.0, share_momentum = 0.0, share_correction = 0.0, share_output = 0.0, share_forcing = 0.0;
+    double share_poisson = 0.0, share_momentum = 0.0, share_correction = 0.0, share_output = 0.0, share_forcing = 0.0,
+           share_turbulence = 0.0;
     double mean_poisson_iterations = 0.0;
     double cell_steps_per_second = 0.0;
     double kinetic_energy = 0.0, max_divergence = 0.0;

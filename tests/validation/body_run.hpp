@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,18 @@ struct ForceSample {
 
 class BodyRun {
 public:
-    BodyRun(const CaseConfig& c, MPI_Comm comm) : solver(c, comm), ibm(solver.grid(), c), free(c, ibm) {}
+    BodyRun(const CaseConfig& c, MPI_Comm comm) : solver(c, comm), ibm(solver.grid(), c), free(c, ibm) {
+        if (c.turbulence.model == TurbulenceModelType::k_epsilon)
+            turbulence = std::make_unique<KEpsilon>(c, solver, ibm);
+    }
 
     // One step; returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {
-        advance(solver, ibm, free, dt);
+        advance(solver, ibm, free, dt, turbulence.get());
+        if (ibm.empty()) {
+            history.push_back({solver.time(), BodyForces{}});
+            return last;
+        }
         last = ibm.forces(solver.velocity(), solver.pressure());
         free.report(last);
         history.push_back({solver.time(), last.at(0)});
@@ -55,6 +63,7 @@ public:
     FlowSolver solver;
     ImmersedBoundary ibm;
     FreeBodies free;
+    std::unique_ptr<KEpsilon> turbulence;  // when the case asks for k-epsilon
     std::vector<BodyForces> last;
     std::vector<ForceSample> history;
 };

@@ -7,6 +7,7 @@ add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_moving_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_bluff_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_free_bodies.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_turbulence.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
 target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -45,3 +46,8 @@ chute_validation(free_neutral_disc_at_rest FreeBodies.NeutrallyBuoyantDiscStaysA
 chute_validation(free_light_disc_rises FreeBodies.LightDiscRisesWithItsAddedMass 2 "validation")
 chute_validation(settling_disc_glowinski FreeBodies.SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber 2 "validation")
 chute_validation(free_body_start_inside_obstacle FreeBodies.StartInsideAnObstacleIsAnError 1 "validation")
+
+# Turbulence
+chute_validation(turbulent_channel Turbulence.ChannelBulkVelocity 2 "validation")
+chute_validation(turbulent_channel_first_cell Turbulence.ChannelIndependentOfTheFirstCell 2 "validation")
+chute_validation(turbulent_channel_friction Turbulence.ChannelFrictionCoefficient 2 "validation;slow")

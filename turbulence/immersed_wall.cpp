@@ -1,0 +1,141 @@
+#include "immersed_wall.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "wall_function.hpp"
+
+namespace chute {
+
+namespace {
+
+// First global cell whose centre is >= x (clamped), and last whose centre is <= x.
+int first_centre_at_or_after(const Axis& a, double x) {
+    const auto& L = a.lines();
+    const int k = static_cast<int>(std::lower_bound(L.begin(), L.end(), x) - L.begin()) - 1;
+    return std::clamp(k, 0, a.cells() - 1);
+}
+
+}  // namespace
+
+ImmersedWall::ImmersedWall(const Grid& grid, const ImmersedBoundary& bodies, const CaseConfig& config)
+    : grid_(grid), bodies_(bodies), nu_(config.viscosity), image_cells_(config.turbulence.image_distance),
+      fluid_(grid, 1.0) {}
+
+double ImmersedWall::cell_size(int gi, int gj) const {
+    return std::max(grid_.x_axis().width(gi), grid_.y_axis().width(gj));
+}
+
+void ImmersedWall::locate() {
+    if (bodies_.empty()) return;
+    const bool any_moves = std::any_of(bodies_.bodies().begin(), bodies_.bodies().end(),
+                                       [](const Body& b) { return b.moves() || b.free(); });
+    if (located_ && !any_moves) return;
+    located_ = true;
+
+    const Axis& ax = grid_.x_axis();
+    const Axis& ay = grid_.y_axis();
+    const int margin = static_cast<int>(std::ceil(image_cells_)) + 3;
+    // Static bodies are scanned once (a plane bounds half the domain: all of it is scanned).
+    if (!static_scanned_) {
+        fluid_.fill(1.0);
+        band_.clear();
+        for (std::size_t b = 0; b < bodies_.bodies().size(); ++b) {
+            const Body& body = bodies_.bodies()[b];
+            if (body.moves() || body.free()) continue;
+            if (!body.outline().closed()) scan(b, 0, ax.cells() - 1, 0, ay.cells() - 1);
+            else scan_around(b, margin);
+        }
+        static_fluid_ = fluid_;
+        static_band_ = band_;
+        static_scanned_ = true;
+    }
+    fluid_ = static_fluid_;
+    band_ = static_band_;
+    for (std::size_t b = 0; b < bodies_.bodies().size(); ++b) {
+        const Body& body = bodies_.bodies()[b];
+        if (body.moves() || body.free()) scan_around(b, margin);
+    }
+    // A cell near one body may lie inside another (the block resting on the bed): the nearest surface and
+    // the sign of the smallest distance decide.
+    std::unordered_map<long long, std::size_t> seen;
+    std::vector<BandCell> merged;
+    for (const BandCell& c : band_) {
+        const long long key = 1LL * c.gj * ax.cells() + c.gi;
+        auto [it, fresh] = seen.try_emplace(key, merged.size());
+        if (fresh) merged.push_back(c);
+        else if (c.d < merged[it->second].d) merged[it->second] = c;
+    }
+    std::erase_if(merged, [](const BandCell& c) { return c.d <= -2.0 * c.h; });
+    band_ = std::move(merged);
+    std::vector<Vec2> images;
+    images.reserve(band_.size());
+    for (const BandCell& c : band_) images.push_back(c.surface + image_cells_ * c.h * c.normal);
+    su_ = bilinear_stencils(grid_, Staggering::u_face, images);
+    sv_ = bilinear_stencils(grid_, Staggering::v_face, images);
+    sk_ = bilinear_stencils(grid_, Staggering::cell, images);
+}
+
+// A closed body: the cells of its bounding box, widened by `margin` cells.
+void ImmersedWall::scan_around(std::size_t b, int margin) {
+    const Body& body = bodies_.bodies()[b];
+    const Axis& ax = grid_.x_axis();
+    const Axis& ay = grid_.y_axis();
+    if (!body.outline().closed()) return scan(b, 0, ax.cells() - 1, 0, ay.cells() - 1);
+    const double r = body.outline().reach();
+    const Vec2 c = body.state().centre;
+    scan(b, std::max(0, first_centre_at_or_after(ax, c.x() - r) - margin),
+         std::min(ax.cells() - 1, first_centre_at_or_after(ax, c.x() + r) + margin),
+         std::max(0, first_centre_at_or_after(ay, c.y() - r) - margin),
+         std::min(ay.cells() - 1, first_centre_at_or_after(ay, c.y() + r) + margin));
+}
+
+void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
+    const Body& body = bodies_.bodies()[b];
+    const Axis& ax = grid_.x_axis();
+    const Axis& ay = grid_.y_axis();
+    const LocalAxis& lx = grid_.lx();
+    const LocalAxis& ly = grid_.ly();
+    auto distance = [&](const Vec2& X) {
+        return body.outline().signed_distance(rotated(X - body.state().centre, -body.state().angle));
+    };
+    for (int gj = gj0; gj <= gj1; ++gj)
+        for (int gi = gi0; gi <= gi1; ++gi) {
+            const Vec2 x(ax.centre(gi), ay.centre(gj));
+            const double d = distance(x);
+            const double h = cell_size(gi, gj);
+            const int li = gi - lx.offset, lj = gj - ly.offset;
+            if (d < 0.0 && li >= -kGhost && li < grid_.nx() + kGhost && lj >= -kGhost && lj < grid_.ny() + kGhost)
+                fluid_(li, lj) = 0.0;
+            if (d <= -2.0 * h || d >= image_cells_ * h) continue;
+            // Outward normal: the gradient of the signed distance (central differences).
+            const double e = 1e-4 * h;
+            Vec2 n(distance(x + Vec2(e, 0)) - distance(x - Vec2(e, 0)), distance(x + Vec2(0, e)) - distance(x - Vec2(0, e)));
+            if (n.norm() == 0.0) continue;
+            n.normalize();
+            band_.push_back({gi, gj, static_cast<int>(b), d, h, x - d * n, n});
+        }
+}
+
+std::vector<NearWallCell> ImmersedWall::evaluate(const Velocity& vel, const Field2D& k) const {
+    std::vector<NearWallCell> out;
+    if (band_.empty()) return out;
+    const std::vector<Vec2> u = interpolate_velocity(grid_, su_, sv_, vel);
+    const std::vector<double> k_image = interpolate(grid_, sk_, k);
+    const LocalAxis& lx = grid_.lx();
+    const LocalAxis& ly = grid_.ly();
+    for (std::size_t m = 0; m < band_.size(); ++m) {
+        const BandCell& c = band_[m];
+        const int i = c.gi - lx.offset, j = c.gj - ly.offset;
+        if (i < 0 || i >= grid_.nx() || j < 0 || j >= grid_.ny()) continue;
+        const double delta = image_cells_ * c.h;
+        const WallFunction wf(k_image[m], delta, nu_);
+        const Vec2 slip = u[m] - bodies_.bodies()[c.body].velocity_at(c.surface);
+        const double speed = std::abs(slip.dot(perp(c.normal)));
+        out.push_back({i, j, c.d, c.h, wf.nu_wall, wf.shear(speed, delta, nu_), c.d >= 0.0 && c.d < c.h});
+    }
+    return out;
+}
+
+}  // namespace chute

@@ -1,0 +1,255 @@
+#include "k_epsilon.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "scalar_transport.hpp"
+#include "wall_function.hpp"
+
+namespace chute {
+
+namespace {
+
+using C = KEpsilonConstants;
+
+bool is_wall(const CaseConfig& c, Side s) { return c.boundary[static_cast<int>(s)].type == BoundaryType::wall; }
+
+// The speed that sets the inflow and initial k.
+double velocity_scale(const CaseConfig& c) {
+    if (c.turbulence.velocity_scale > 0.0) return c.turbulence.velocity_scale;
+    double u = std::hypot(c.initial_velocity[0], c.initial_velocity[1]);
+    for (const BoundaryConfig& b : c.boundary)
+        if (b.type == BoundaryType::inflow)
+            u = std::max(u, b.profile == InflowProfile::parabolic ? b.peak : std::hypot(b.velocity[0], b.velocity[1]));
+    return u;
+}
+
+}  // namespace
+
+KEpsilon::KEpsilon(const CaseConfig& config, FlowSolver& flow, const ImmersedBoundary& bodies)
+    : config_(config), flow_(flow), grid_(flow.grid()), immersed_(flow.grid(), bodies, config), halo_(flow.grid()) {
+    const double U = velocity_scale(config);
+    if (U <= 0.0)
+        throw std::invalid_argument(
+            "turbulence.velocity_scale: the case has no inflow and no initial speed, so it must give the speed "
+            "that sets the initial k (for a body released in still water, about its fall speed)");
+    k_in_ = 1.5 * std::pow(config.turbulence.intensity * U, 2);
+    eps_in_ = std::pow(C::c_mu, 0.75) * std::pow(k_in_, 1.5) / config.turbulence.length_scale;
+    // Floors far below any physical level: they only keep eps / k and C_mu k^2 / eps defined.
+    k_floor_ = 1e-10 * k_in_;
+    eps_floor_ = 1e-10 * eps_in_;
+    k_ = eps_ = model_nu_t_ = P_ = tk_ = te_ = Field2D(grid_);
+    was_fluid_ = Field2D(grid_, 1.0);
+    set_initial_condition();
+}
+
+void KEpsilon::set_initial_condition() {
+    k_.fill(k_in_);
+    eps_.fill(eps_in_);
+    restored();
+}
+
+void KEpsilon::restored() {
+    immersed_.locate();
+    was_fluid_ = immersed_.fluid();
+    set_ghosts(k_, k_in_);
+    set_ghosts(eps_, eps_in_);
+    near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
+    refresh_eddy_viscosity();
+}
+
+// Ghosts: inflow values on inflow sides, zero gradient elsewhere (walls: no flux of k; outflow; slip);
+// periodic sides and patch edges by the halo exchange.
+void KEpsilon::set_ghosts(Field2D& f, double inflow) const {
+    halo_.exchange(f);
+    const int nx = grid_.nx(), ny = grid_.ny();
+    for (Side s : kSides) {
+        if (!grid_.touches(s)) continue;
+        const BoundaryType type = config_.boundary[static_cast<int>(s)].type;
+        if (type == BoundaryType::periodic) continue;
+        const bool in = type == BoundaryType::inflow;
+        for (int g = 1; g <= kGhost; ++g) {
+            if (s == Side::left || s == Side::right)
+                for (int j = -kGhost; j < ny + kGhost; ++j) {
+                    const int ghost = s == Side::left ? -g : nx - 1 + g, mirror = s == Side::left ? g - 1 : nx - g;
+                    f(ghost, j) = in ? inflow : f(mirror, j);
+                }
+            else
+                for (int i = -kGhost; i < nx + kGhost; ++i) {
+                    const int ghost = s == Side::bottom ? -g : ny - 1 + g, mirror = s == Side::bottom ? g - 1 : ny - g;
+                    f(i, ghost) = in ? inflow : f(i, mirror);
+                }
+        }
+    }
+}
+
+// P_k = nu_t S^2 with S^2 = 2 (du/dx^2 + dv/dy^2) + (du/dy + dv/dx)^2, the shear strain taken at the four
+// corners of the cell and its square averaged.
+void KEpsilon::production(Field2D& P) const {
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const Velocity& vel = flow_.velocity();
+    auto shear = [&](int a, int b) {
+        return (vel.u(a, b) - vel.u(a, b - 1)) / Y.dc(b) + (vel.v(a, b) - vel.v(a - 1, b)) / X.dc(a);
+    };
+    const double limit = config_.turbulence.production_limit;
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i) {
+            const double dudx = (vel.u(i + 1, j) - vel.u(i, j)) / X.w(i);
+            const double dvdy = (vel.v(i, j + 1) - vel.v(i, j)) / Y.w(j);
+            const double s00 = shear(i, j), s10 = shear(i + 1, j), s01 = shear(i, j + 1), s11 = shear(i + 1, j + 1);
+            const double S2 = 2.0 * (dudx * dudx + dvdy * dvdy) + 0.25 * (s00 * s00 + s10 * s10 + s01 * s01 + s11 * s11);
+            double p = model_nu_t_(i, j) * S2;
+            if (limit > 0.0) p = std::min(p, limit * eps_(i, j));
+            P(i, j) = p;
+        }
+}
+
+// The cells whose eps and P_k come from the log law: the first cell beside each wall side, and the
+// wall-function cells beside immersed surfaces.
+std::vector<KEpsilon::WallCell> KEpsilon::wall_cells() const {
+    std::vector<WallCell> out;
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const Velocity& vel = flow_.velocity();
+    const double nu = config_.viscosity;
+    const int nx = grid_.nx(), ny = grid_.ny();
+    for (Side s : kSides) {
+        if (!grid_.touches(s) || !is_wall(config_, s)) continue;
+        const auto& wall = config_.boundary[static_cast<int>(s)].velocity;
+        if (s == Side::bottom || s == Side::top) {
+            const int j = s == Side::bottom ? 0 : ny - 1;
+            const double y = 0.5 * Y.w(j);
+            for (int i = 0; i < nx; ++i) {
+                const double speed = std::abs(0.5 * (vel.u(i, j) + vel.u(i + 1, j)) - wall[0]);
+                out.push_back({i, j, y, WallFunction(k_(i, j), y, nu).shear(speed, y, nu), false});
+            }
+        } else {
+            const int i = s == Side::left ? 0 : nx - 1;
+            const double y = 0.5 * X.w(i);
+            for (int j = 0; j < ny; ++j) {
+                const double speed = std::abs(0.5 * (vel.v(i, j) + vel.v(i, j + 1)) - wall[1]);
+                out.push_back({i, j, y, WallFunction(k_(i, j), y, nu).shear(speed, y, nu), false});
+            }
+        }
+    }
+    // Beside an immersed surface the cell centre may be anywhere from on the surface to a cell away: its
+    // fluid part spans about [0, d + h/2], whose middle stands for its distance.
+    for (const NearWallCell& c : near_wall_)
+        if (c.wall_function) out.push_back({c.i, c.j, 0.5 * (c.distance + 0.5 * c.size), c.tau_wall, true});
+    return out;
+}
+
+void KEpsilon::update(double dt) {
+    const double nu = config_.viscosity;
+    immersed_.locate();
+    const Field2D& fluid = immersed_.fluid();
+    set_ghosts(k_, k_in_);
+    set_ghosts(eps_, eps_in_);
+    near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
+
+    production(P_);
+    const std::vector<WallCell> walls = wall_cells();
+    for (const WallCell& w : walls) {
+        const WallFunction wf(k_(w.i, w.j), w.y, nu);
+        P_(w.i, w.j) = wf.production(w.tau_wall, w.y);
+    }
+    scalar_transport(grid_, flow_.velocity(), k_, model_nu_t_, nu, C::sigma_k, fluid, tk_);
+    scalar_transport(grid_, flow_.velocity(), eps_, model_nu_t_, nu, C::sigma_eps, fluid, te_);
+
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i) {
+            if (fluid(i, j) == 0.0) continue;
+            const double k = k_(i, j), e = eps_(i, j), rate = e / k;
+            k_(i, j) = std::max(k_floor_, (k + dt * (tk_(i, j) + P_(i, j))) / (1.0 + dt * rate));
+            eps_(i, j) = std::max(eps_floor_, (e + dt * (te_(i, j) + C::c1 * rate * P_(i, j))) / (1.0 + dt * C::c2 * rate));
+        }
+    for (const WallCell& w : walls) eps_(w.i, w.j) = std::max(eps_floor_, WallFunction(k_(w.i, w.j), w.y, nu).dissipation(k_(w.i, w.j), w.y, nu));
+
+    // Cells the bodies uncovered this step start from their fluid neighbours.
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i) {
+            if (fluid(i, j) == 0.0 || was_fluid_(i, j) != 0.0) continue;
+            double sk = 0.0, se = 0.0, n = 0.0;
+            for (auto [a, b] : {std::pair{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}})
+                if (was_fluid_(a, b) != 0.0 && fluid(a, b) != 0.0) sk += k_(a, b), se += eps_(a, b), n += 1.0;
+            k_(i, j) = n > 0.0 ? sk / n : k_in_;
+            eps_(i, j) = n > 0.0 ? se / n : eps_in_;
+        }
+    was_fluid_ = fluid;
+    set_ghosts(k_, k_in_);
+    set_ghosts(eps_, eps_in_);
+    refresh_eddy_viscosity();
+}
+
+// nu_t = C_mu k^2 / eps in the fluid, 0 inside bodies, at least the wall eddy viscosity in the immersed
+// near-wall band; corners average their four cells, except on wall sides: the wall-function value there.
+void KEpsilon::refresh_eddy_viscosity() {
+    EddyViscosity& e = flow_.eddy_viscosity();
+    const Field2D& fluid = immersed_.fluid();
+    const double nu = config_.viscosity;
+    const int nx = grid_.nx(), ny = grid_.ny();
+    for (int j = -kGhost; j < ny + kGhost; ++j)
+        for (int i = -kGhost; i < nx + kGhost; ++i)
+            model_nu_t_(i, j) = fluid(i, j) != 0.0 ? C::c_mu * k_(i, j) * k_(i, j) / eps_(i, j) : 0.0;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) e.cell(i, j) = model_nu_t_(i, j);
+    for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
+    halo_.exchange(e.cell);
+    for (Side s : kSides) {  // zero gradient across the domain boundary
+        if (!grid_.touches(s) || config_.boundary[static_cast<int>(s)].type == BoundaryType::periodic) continue;
+        for (int g = 1; g <= kGhost; ++g) {
+            if (s == Side::left || s == Side::right)
+                for (int j = -kGhost; j < ny + kGhost; ++j)
+                    e.cell(s == Side::left ? -g : nx - 1 + g, j) = e.cell(s == Side::left ? g - 1 : nx - g, j);
+            else
+                for (int i = -kGhost; i < nx + kGhost; ++i)
+                    e.cell(i, s == Side::bottom ? -g : ny - 1 + g) = e.cell(i, s == Side::bottom ? g - 1 : ny - g);
+        }
+    }
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i)
+            e.corner(i, j) = 0.25 * (e.cell(i - 1, j - 1) + e.cell(i, j - 1) + e.cell(i - 1, j) + e.cell(i, j));
+    // Wall sides: the corners on the wall carry the wall eddy viscosity of the two cells beside them, so
+    // that (nu + nu_w) times the mirrored-ghost gradient U_t / y is the log-law shear.
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    for (Side s : kSides) {
+        if (!grid_.touches(s) || !is_wall(config_, s)) continue;
+        if (s == Side::bottom || s == Side::top) {
+            const int j = s == Side::bottom ? 0 : ny - 1, jc = s == Side::bottom ? 0 : ny;
+            const double y = 0.5 * Y.w(j);
+            for (int i = 0; i <= nx; ++i)
+                e.corner(i, jc) = 0.5 * (WallFunction(k_(i - 1, j), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
+        } else {
+            const int i = s == Side::left ? 0 : nx - 1, ic = s == Side::left ? 0 : nx;
+            const double y = 0.5 * X.w(i);
+            for (int j = 0; j <= ny; ++j)
+                e.corner(ic, j) = 0.5 * (WallFunction(k_(i, j - 1), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
+        }
+    }
+    double mx = 0.0;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) mx = std::max(mx, e.cell(i, j));
+    MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
+    e.max = mx;
+}
+
+std::optional<std::string> KEpsilon::check() const {
+    int bad[2] = {0, 0};  // non-finite k or eps; runaway nu_t
+    const double limit = 1e8 * config_.viscosity;
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i) {
+            if (!std::isfinite(k_(i, j)) || !std::isfinite(eps_(i, j))) bad[0] = 1;
+            if (!(flow_.eddy_viscosity().cell(i, j) < limit)) bad[1] = 1;
+        }
+    MPI_Allreduce(MPI_IN_PLACE, bad, 2, MPI_INT, MPI_MAX, grid_.comm());
+    if (bad[0]) return "k-epsilon: k or epsilon is no longer finite";
+    if (bad[1]) return "k-epsilon: the eddy viscosity exceeds 1e8 times the molecular viscosity";
+    return std::nullopt;
+}
+
+}  // namespace chute

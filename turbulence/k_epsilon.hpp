@@ -1,0 +1,73 @@
+#pragma once
+// The standard k-epsilon model (Launder & Spalding 1974), the model Turmel & Locat (2008) ran:
+//
+//   dk/dt   + div(u k)   = div[(nu + nu_t/sigma_k) grad k]     + P_k - eps
+//   deps/dt + div(u eps) = div[(nu + nu_t/sigma_eps) grad eps] + (C_1 P_k - C_2 eps) eps / k
+//   nu_t = C_mu k^2 / eps,     P_k = nu_t S^2,  S^2 = 2 S_ij S_ij
+//
+// One update per flow step, after the projection (DESIGN.md data flow), from u^{n+1}:
+//   transport  explicit, bounded (scalar_transport.hpp)
+//   sources    P_k explicit (optionally limited, P_k <= limit * eps), the sinks implicit:
+//              k^{n+1} = (k^n + dt (T_k + P_k)) / (1 + dt eps^n / k^n), likewise for eps with C_2,
+//              so neither can turn negative from its source (Patankar 1980, source linearisation)
+//   walls      the first cell beside a wall side, and the cells beside an immersed surface
+//              (immersed_wall.hpp), take eps and P_k from the log law (wall_function.hpp); k sees no
+//              flux through the wall
+//   nu_t       into the flow solver (core/viscous_stress.hpp), with the wall eddy viscosity at wall
+//              corners and in the immersed near-wall band
+// Inflow values: k = 3/2 (I U)^2, eps = C_mu^{3/4} k^{3/2} / l (turbulence.intensity, length_scale).
+#include <optional>
+#include <string>
+
+#include "case_config.hpp"
+#include "flow_solver.hpp"
+#include "halo_exchange.hpp"
+#include "immersed_boundary.hpp"
+#include "immersed_wall.hpp"
+
+namespace chute {
+
+class KEpsilon {
+public:
+    // Throws std::invalid_argument naming the key when the case gives no speed for the initial k.
+    KEpsilon(const CaseConfig& config, FlowSolver& flow, const ImmersedBoundary& bodies);
+
+    // Uniform k and eps of the inflow (or the initial speed); nu_t into the flow solver.
+    void set_initial_condition();
+    // Advance k and eps over the flow step just taken (dt), then refresh nu_t.
+    void update(double dt);
+    // After k and eps were read from a checkpoint.
+    void restored();
+    // Empty, or what went wrong (non-finite k or eps, nu_t beyond 1e8 nu): collective.
+    std::optional<std::string> check() const;
+
+    Field2D& k() { return k_; }
+    Field2D& epsilon() { return eps_; }
+    const Field2D& k() const { return k_; }
+    const Field2D& epsilon() const { return eps_; }
+    const Field2D& eddy_viscosity() const { return flow_.eddy_viscosity().cell; }
+    double inflow_k() const { return k_in_; }
+    double inflow_epsilon() const { return eps_in_; }
+
+private:
+    struct WallCell {
+        int i, j;
+        double y, tau_wall;
+        bool immersed;
+    };
+    void set_ghosts(Field2D& f, double inflow) const;
+    void production(Field2D& P) const;
+    std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
+    void refresh_eddy_viscosity();
+
+    const CaseConfig& config_;
+    FlowSolver& flow_;
+    const Grid& grid_;
+    ImmersedWall immersed_;
+    mutable HaloExchange halo_;
+    Field2D k_, eps_, model_nu_t_, P_, tk_, te_, was_fluid_;
+    std::vector<NearWallCell> near_wall_;
+    double k_in_ = 0.0, eps_in_ = 0.0, k_floor_ = 0.0, eps_floor_ = 0.0;
+};
+
+}  // namespace chute

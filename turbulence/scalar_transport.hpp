@@ -1,0 +1,20 @@
+#pragma once
+// Convection and diffusion of a cell-centred scalar (k or epsilon) by the MAC velocity, explicit:
+//
+//   T(phi)_P = -(1/V) sum_f A_f u_f (phi_f - phi_P) + (1/V) sum_f A_f Gamma_f (phi_N - phi_P) / dc_f
+//
+// The convective part is the advective form -div(u phi) + phi div(u): a uniform phi stays uniform whatever
+// faces are closed. phi_f is the van Leer TVD face value (limiter.hpp), so with forward Euler and
+// cfl <= 1/2 the update is bounded (no new extrema: k and epsilon stay positive). Gamma_f = nu + nu_t,f /
+// sigma with nu_t,f the mean of the two cells. Faces between a fluid cell and a solid cell (inside an
+// immersed body: `fluid` = 0) carry no flux, convective or diffusive: the immersed surface is a zero-flux
+// wall for the scalar, and the wall functions set the near-wall cells (immersed_wall.hpp).
+#include "field.hpp"
+
+namespace chute {
+
+// out(i, j) = T(phi) on owned cells; phi, nu_t and fluid need valid ghosts.
+void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& phi, const Field2D& nu_t, double nu,
+                      double sigma, const Field2D& fluid, Field2D& out);
+
+}  // namespace chute
