@@ -23,7 +23,7 @@ void ImmersedBoundary::move_to(double t) {
     for (Body& b : bodies_) b.move_to(t);
 }
 
-std::vector<BodyForces> ImmersedBoundary::forces(const Velocity& vel, const Field2D& p) const {
+std::vector<BodyForces> ImmersedBoundary::forces(const Velocity& vel, const Field2D& p, const Field2D* k) const {
     std::vector<BodyForces> out(bodies_.size());
     const double rho = config_.density, depth = config_.depth;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -34,7 +34,7 @@ std::vector<BodyForces> ImmersedBoundary::forces(const Velocity& vel, const Fiel
         r.forcing_torque = rho * depth * (-f.torque_rate + body.polar_moment() * body.state().angular_acceleration);
         r.max_slip = f.max_slip;
         r.rms_slip = f.rms_slip;
-        r.surface = stress_[b]->compute(vel, p, rho, config_.viscosity, depth);
+        r.surface = stress_[b]->compute(vel, p, rho, config_.viscosity, depth, k);
     }
     return out;
 }

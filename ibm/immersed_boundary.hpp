@@ -8,7 +8,7 @@
 //     (a) from the forcing (Uhlmann 2005, eq. 23 and 28, rigid-body form of the internal fluid term):
 //           F = rho depth ( -sum_l F_l dV_l + A dU_c/dt ),   M = rho depth ( -sum_l r_l x F_l dV_l + J domega/dt )
 //         A the area and J the polar moment of area of the body: the fluid inside the outline moves with it;
-//     (b) from the stress on the surface, split into pressure and viscous parts (surface_stress).
+//     (b) from the stress on the surface, split into pressure, viscous and turbulent parts (surface_stress).
 // Both refer to the step's mid-point in time: the forcing acts over the step and the pressure is p^{n+1/2}.
 #include <memory>
 #include <vector>
@@ -40,7 +40,8 @@ public:
     Body& body(std::size_t b) { return bodies_[b]; }  // free bodies are moved from outside (rigidbody/)
     void move_to(double t);
     void force(Velocity& star, double dt) { forcing_->apply(star, dt); }
-    std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p) const;
+    // k: the turbulence energy when a k-epsilon model runs (adds the turbulent part of the surface stress).
+    std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p, const Field2D* k = nullptr) const;
     const DirectForcing& forcing() const { return *forcing_; }
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 

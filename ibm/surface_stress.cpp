@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "wall_function.hpp"
+
 namespace chute {
 
 SurfaceStress::SurfaceStress(const Grid& grid, const IbmConfig& config, const Body& body, double marker_spacing)
@@ -32,9 +34,10 @@ void SurfaceStress::place() {
 }
 
 SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, double density, double viscosity,
-                                     double depth) {
+                                     double depth, const Field2D* k) {
     if (!placed_ || body_.moves()) place();
     const std::vector<double> P1 = interpolate(grid_, p1_, p), P2 = interpolate(grid_, p2_, p);
+    const std::vector<double> K2 = k ? interpolate(grid_, p2_, *k) : std::vector<double>(markers_.size(), 0.0);
     const std::vector<Vec2> U1 = interpolate_velocity(grid_, u1_, v1_, vel);
     const std::vector<Vec2> U2 = interpolate_velocity(grid_, u2_, v2_, vel);
     SurfaceForces f;
@@ -44,7 +47,7 @@ SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, doub
         const double ds = markers_[l].length * depth;
         const Vec2& n = normal_[l];
         const Vec2 t = perp(n);
-        const double p_wall = density * (P1[l] - d1 * (P2[l] - P1[l]) / (d2 - d1));
+        const double p_wall = density * (P1[l] - d1 * (P2[l] - P1[l]) / (d2 - d1) - 2.0 / 3.0 * K2[l]);
         wall_pressure_[l] = p_wall;
         const double h = h_[l];
         const double w1 = (U1[l] - body_.velocity_at(probe1_[l])).dot(t);
@@ -57,6 +60,12 @@ SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, doub
         f.viscous += fv;
         f.pressure_torque += cross(r, fp);
         f.viscous_torque += cross(r, fv);
+        if (k) {
+            const double nu_wall = WallFunction(K2[l], d2 * h, viscosity).nu_wall;
+            const Vec2 ft = density * (nu_wall * dwdn * t - 2.0 / 3.0 * K2[l] * n) * ds;
+            f.turbulent += ft;
+            f.turbulent_torque += cross(r, ft);
+        }
     }
     return f;
 }

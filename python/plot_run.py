@@ -103,11 +103,16 @@ def plot_body(run_dir, name, b, fields_file):
     ax[1].plot(t, b["cx_viscous"], label="C_x viscous")
     ax[1].plot(t, b["cy_pressure"], label="C_y pressure")
     ax[1].plot(t, b["cy_viscous"], label="C_y viscous")
+    turbulent = "cx_turbulent" in b and (np.any(b["cx_turbulent"] != 0) or np.any(b["cy_turbulent"] != 0))
+    if turbulent:
+        ax[1].plot(t, b["cx_turbulent"], label="C_x turbulent")
+        ax[1].plot(t, b["cy_turbulent"], label="C_y turbulent")
     ax[1].set_ylabel("surface stress by kind")
     ax[1].legend(fontsize=7, ncol=2)
     # Impulsive starts give a spike of many times the later forces: scale the axes to the bulk of the run.
     for a, keys in ((ax[0], ["cx_forcing", "cx_surface", "cy_forcing", "cy_surface"]),
-                    (ax[1], ["cx_pressure", "cx_viscous", "cy_pressure", "cy_viscous"])):
+                    (ax[1], ["cx_pressure", "cx_viscous", "cy_pressure", "cy_viscous"] +
+                     (["cx_turbulent", "cy_turbulent"] if turbulent else []))):
         values = np.concatenate([b[k][len(t) // 20:] for k in keys]) if len(t) > 20 else None
         if values is not None and values.size:
             lo, hi = np.percentile(values, [0.5, 99.5])
@@ -168,6 +173,8 @@ def plot_trajectory(run_dir, name, b):
     ax[2].plot(t, b["fy_gravity"] + b["fy_buoyancy"], label="gravity + buoyancy (y)")
     ax[2].plot(t, b["fy_pressure"], "--", label="pressure (y)")
     ax[2].plot(t, b["fy_viscous"], "--", label="viscous (y)")
+    if "fy_turbulent" in b and np.any(b["fy_turbulent"] != 0):
+        ax[2].plot(t, b["fy_turbulent"], "--", label="turbulent (y)")
     values = np.concatenate([b["fy_forcing"], b["fy_gravity"] + b["fy_buoyancy"]])
     lo, hi = np.percentile(values, [1, 99])
     pad = 0.2 * (hi - lo) or 1.0

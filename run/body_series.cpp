@@ -6,8 +6,9 @@ std::vector<std::string> BodySeries::columns() {
     return {"t",           "x",           "y",           "angle",      "u",          "v",
             "omega",       "ax",          "ay",          "alpha",      "fx_forcing", "fy_forcing",
             "m_forcing",   "fx_pressure", "fy_pressure", "m_pressure", "fx_viscous", "fy_viscous",
-            "m_viscous",   "fx_surface",  "fy_surface",  "m_surface",  "cx_forcing", "cy_forcing",
-            "cx_pressure", "cy_pressure", "cx_viscous",  "cy_viscous", "cx_surface", "cy_surface",
+            "m_viscous",   "fx_turbulent", "fy_turbulent", "m_turbulent", "fx_surface",  "fy_surface",
+            "m_surface",   "cx_forcing", "cy_forcing", "cx_pressure", "cy_pressure", "cx_viscous",
+            "cy_viscous",  "cx_turbulent", "cy_turbulent", "cx_surface", "cy_surface",
             "max_slip",    "rms_slip",   "fx_gravity", "fy_gravity", "fx_buoyancy", "fy_buoyancy",
             "fx_contact",  "fy_contact", "m_contact",  "fx_total",   "fy_total",   "m_total"};
 }
@@ -25,7 +26,7 @@ void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
         const BodyState& s = body.state();
         const BodyForces& f = forces[k];
         const SurfaceForces& sf = f.surface;
-        const Vec2 surface = sf.pressure + sf.viscous;
+        const Vec2 surface = sf.total();
         const Vec2 total = f.forcing + f.gravity + f.buoyancy + f.contact;
         const double U = body.config().reference_velocity, L = body.config().reference_length;
         const double q = 0.5 * config_.density * U * U * L * config_.depth;  // force scale, N
@@ -48,15 +49,20 @@ void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
                             sf.viscous.x(),
                             sf.viscous.y(),
                             sf.viscous_torque,
+                            sf.turbulent.x(),
+                            sf.turbulent.y(),
+                            sf.turbulent_torque,
                             surface.x(),
                             surface.y(),
-                            sf.pressure_torque + sf.viscous_torque,
+                            sf.total_torque(),
                             f.forcing.x() / q,
                             f.forcing.y() / q,
                             sf.pressure.x() / q,
                             sf.pressure.y() / q,
                             sf.viscous.x() / q,
                             sf.viscous.y() / q,
+                            sf.turbulent.x() / q,
+                            sf.turbulent.y() / q,
                             surface.x() / q,
                             surface.y() / q,
                             f.max_slip,

@@ -6,8 +6,10 @@
 //   t, x, y, angle, u, v, omega, ax, ay, alpha                      kinematics of the centre
 //   fx_forcing, fy_forcing, m_forcing                                (a) from the forcing sum
 //   fx_pressure, fy_pressure, m_pressure, fx_viscous, fy_viscous, m_viscous,
+//   fx_turbulent, fy_turbulent, m_turbulent (k-epsilon: Reynolds stress; 0 laminar),
 //   fx_surface, fy_surface, m_surface                                (b) surface stress, by kind and total
-//   cx_forcing, cy_forcing, cx_pressure, cy_pressure, cx_viscous, cy_viscous, cx_surface, cy_surface
+//   cx_forcing, cy_forcing, cx_pressure, cy_pressure, cx_viscous, cy_viscous, cx_turbulent, cy_turbulent,
+//   cx_surface, cy_surface
 //   max_slip, rms_slip                                               no-slip error at the markers (m/s)
 //   fx_gravity, fy_gravity, fx_buoyancy, fy_buoyancy,               free bodies (zero otherwise): gravity,
 //   fx_contact, fy_contact, m_contact, fx_total, fy_total, m_total  buoyancy, contact (impulses / dt), total

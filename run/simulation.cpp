@@ -167,7 +167,8 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         }
         series.append(row);
         if (!bodies.empty()) {
-            std::vector<BodyForces> forces = bodies.forces(solver.velocity(), solver.pressure());
+            std::vector<BodyForces> forces = bodies.forces(solver.velocity(), solver.pressure(),
+                                                              turbulence ? &turbulence->k() : nullptr);
             free_bodies.report(forces);
             body_series.append(solver.time(), forces);
             trajectories.observe(solver.time(), forces);

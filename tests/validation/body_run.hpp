@@ -42,7 +42,7 @@ public:
             history.push_back({solver.time(), BodyForces{}});
             return last;
         }
-        last = ibm.forces(solver.velocity(), solver.pressure());
+        last = ibm.forces(solver.velocity(), solver.pressure(), turbulence ? &turbulence->k() : nullptr);
         free.report(last);
         history.push_back({solver.time(), last.at(0)});
         return last;
