@@ -51,3 +51,5 @@ chute_validation(free_body_start_inside_obstacle FreeBodies.StartInsideAnObstacl
 chute_validation(turbulent_channel Turbulence.ChannelBulkVelocity 2 "validation")
 chute_validation(turbulent_channel_first_cell Turbulence.ChannelIndependentOfTheFirstCell 2 "validation")
 chute_validation(turbulent_channel_friction Turbulence.ChannelFrictionCoefficient 2 "validation;slow")
+chute_validation(square_cylinder_re22000 Turbulence.SquareCylinderRe22000 2 "validation;slow")
+chute_validation(square_cylinder_re22000_empty Turbulence.SquareCylinderDomainWithoutBodyMakesNoTurbulence 2 "validation")
