@@ -157,8 +157,8 @@ void KEpsilon::update(double dt) {
         const WallFunction wf(k_(w.i, w.j), w.y, nu);
         P_(w.i, w.j) = wf.production(w.tau_wall, w.y);
     }
-    scalar_transport(grid_, flow_.velocity(), k_, model_nu_t_, nu, C::sigma_k, fluid, tk_);
-    scalar_transport(grid_, flow_.velocity(), eps_, model_nu_t_, nu, C::sigma_eps, fluid, te_);
+    scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
+                     {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}});
 
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i) {

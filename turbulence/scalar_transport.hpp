@@ -1,5 +1,5 @@
 #pragma once
-// Convection and diffusion of a cell-centred scalar (k or epsilon) by the MAC velocity, explicit:
+// Convection and diffusion of cell-centred scalars (k and epsilon) by the MAC velocity, explicit:
 //
 //   T(phi)_P = -(1/V) sum_f A_f u_f (phi_f - phi_P) + (1/V) sum_f A_f Gamma_f (phi_N - phi_P) / dc_f
 //
@@ -9,12 +9,21 @@
 // sigma with nu_t,f the mean of the two cells. Faces between a fluid cell and a solid cell (inside an
 // immersed body: `fluid` = 0) carry no flux, convective or diffusive: the immersed surface is a zero-flux
 // wall for the scalar, and the wall functions set the near-wall cells (immersed_wall.hpp).
+// Each face is visited once for all the scalars (they share the velocity, the mask and nu_t).
+#include <vector>
+
 #include "field.hpp"
 
 namespace chute {
 
-// out(i, j) = T(phi) on owned cells; phi, nu_t and fluid need valid ghosts.
-void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& phi, const Field2D& nu_t, double nu,
-                      double sigma, const Field2D& fluid, Field2D& out);
+struct TransportedScalar {
+    const Field2D* phi;  // needs valid ghosts
+    double sigma;        // turbulent Prandtl-Schmidt number
+    Field2D* out;        // T(phi) on owned cells (0 in solid cells)
+};
+
+// nu_t and fluid need valid ghosts.
+void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& nu_t, double nu, const Field2D& fluid,
+                      const std::vector<TransportedScalar>& scalars);
 
 }  // namespace chute
