@@ -189,3 +189,60 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
                     "the drag\n", worst);
     EXPECT_LT(worst, 1e-8);
 }
+
+// k-epsilon with wall functions on an immersed square, split in y through the square: the forces (all
+// three parts of the surface stress) and k match the single-rank run to the linear-solver tolerance.
+TEST(Parallel, KEpsilonSquareMatchesOneRank) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    CaseConfig c;
+    c.x = AxisConfig{-2.0, 6.0, 128, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{-2.0, 2.0, 64, "uniform", 2.0, 1.05, {}};
+    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
+    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
+    c.boundary[2].type = c.boundary[3].type = BoundaryType::slip;
+    c.initial_velocity = {1.0, 0.0};
+    c.viscosity = 1e-5;
+    c.density = 1.0;
+    c.convection = ConvectionScheme::van_leer;
+    c.poisson_tolerance = 1e-10;
+    c.turbulence.model = TurbulenceModelType::k_epsilon;
+    c.turbulence.intensity = 0.02;
+    BodyConfig sq;
+    sq.name = "square";
+    sq.shape = BodyShape::rectangle;
+    sq.centre = {0.0, 0.0};
+    sq.size = {1.0, 1.0};
+    c.bodies = {sq};
+    auto run = [&](MPI_Comm comm, std::array<int, 2> ranks) {
+        CaseConfig cc = c;
+        cc.ranks = ranks;
+        FlowSolver solver(cc, comm);
+        ImmersedBoundary ibm(solver.grid(), cc);
+        FreeBodies free(cc, ibm);
+        KEpsilon turbulence(cc, solver, ibm);
+        std::vector<BodyForces> f;
+        for (int k = 0; k < 60; ++k) {
+            advance(solver, ibm, free, 0.01, &turbulence);
+            f = ibm.forces(solver.velocity(), solver.pressure(), &turbulence.k());
+        }
+        double kmax = 0.0;
+        for (int j = 0; j < solver.grid().ny(); ++j)
+            for (int i = 0; i < solver.grid().nx(); ++i) kmax = std::max(kmax, turbulence.k()(i, j));
+        MPI_Allreduce(MPI_IN_PLACE, &kmax, 1, MPI_DOUBLE, MPI_MAX, comm);
+        const BodyForces& b = f[0];
+        return std::array<double, 8>{b.forcing.x(), b.forcing.y(), b.surface.pressure.x(), b.surface.viscous.x(),
+                                     b.surface.turbulent.x(), b.surface.turbulent.y(), b.surface.pressure.y(), kmax};
+    };
+    const auto parallel = run(MPI_COMM_WORLD, {1, 2});
+    std::array<double, 8> serial{};
+    if (rank() == 0) serial = run(MPI_COMM_SELF, {0, 0});
+    MPI_Bcast(serial.data(), 8, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    double worst = 0.0;
+    for (int k = 0; k < 7; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / std::abs(serial[0]));
+    const double k_difference = std::abs(parallel[7] - serial[7]) / serial[7];
+    if (rank() == 0)
+        std::printf("k-epsilon square, np=2 (split in y through the square) vs np=1: max force difference %.2e of "
+                    "the drag (turbulent x part %.3e N), max k difference %.2e\n", worst, serial[4], k_difference);
+    EXPECT_LT(worst, 1e-8);
+    EXPECT_LT(k_difference, 1e-8);
+}
