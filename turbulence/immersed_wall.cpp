@@ -10,8 +10,8 @@ namespace chute {
 
 namespace {
 
-// First global cell whose centre is >= x (clamped), and last whose centre is <= x.
-int first_centre_at_or_after(const Axis& a, double x) {
+// The global cell that contains x (clamped to the axis).
+int cell_containing(const Axis& a, double x) {
     const auto& L = a.lines();
     const int k = static_cast<int>(std::lower_bound(L.begin(), L.end(), x) - L.begin()) - 1;
     return std::clamp(k, 0, a.cells() - 1);
@@ -29,40 +29,33 @@ double ImmersedWall::cell_size(int gi, int gj) const {
 
 void ImmersedWall::locate() {
     if (bodies_.empty()) return;
+    // Body::moves() is true for prescribed and free motion alike.
     const bool any_moves = std::any_of(bodies_.bodies().begin(), bodies_.bodies().end(),
-                                       [](const Body& b) { return b.moves() || b.free(); });
+                                       [](const Body& b) { return b.moves(); });
     if (located_ && !any_moves) return;
     located_ = true;
 
-    const Axis& ax = grid_.x_axis();
-    const Axis& ay = grid_.y_axis();
     const int margin = static_cast<int>(std::ceil(image_cells_)) + 3;
     // Static bodies are scanned once (a plane bounds half the domain: all of it is scanned).
     if (!static_scanned_) {
         fluid_.fill(1.0);
         band_.clear();
-        for (std::size_t b = 0; b < bodies_.bodies().size(); ++b) {
-            const Body& body = bodies_.bodies()[b];
-            if (body.moves() || body.free()) continue;
-            if (!body.outline().closed()) scan(b, 0, ax.cells() - 1, 0, ay.cells() - 1);
-            else scan_around(b, margin);
-        }
+        for (std::size_t b = 0; b < bodies_.bodies().size(); ++b)
+            if (!bodies_.bodies()[b].moves()) scan_around(b, margin);
         static_fluid_ = fluid_;
         static_band_ = band_;
         static_scanned_ = true;
     }
     fluid_ = static_fluid_;
     band_ = static_band_;
-    for (std::size_t b = 0; b < bodies_.bodies().size(); ++b) {
-        const Body& body = bodies_.bodies()[b];
-        if (body.moves() || body.free()) scan_around(b, margin);
-    }
+    for (std::size_t b = 0; b < bodies_.bodies().size(); ++b)
+        if (bodies_.bodies()[b].moves()) scan_around(b, margin);
     // A cell near one body may lie inside another (the block resting on the bed): the nearest surface and
     // the sign of the smallest distance decide.
     std::unordered_map<long long, std::size_t> seen;
     std::vector<BandCell> merged;
     for (const BandCell& c : band_) {
-        const long long key = 1LL * c.gj * ax.cells() + c.gi;
+        const long long key = 1LL * c.gj * grid_.global_nx() + c.gi;
         auto [it, fresh] = seen.try_emplace(key, merged.size());
         if (fresh) merged.push_back(c);
         else if (c.d < merged[it->second].d) merged[it->second] = c;
@@ -77,7 +70,7 @@ void ImmersedWall::locate() {
     sk_ = bilinear_stencils(grid_, Staggering::cell, images);
 }
 
-// A closed body: the cells of its bounding box, widened by `margin` cells.
+// A closed body: the cells of its bounding box, widened by `margin` cells; an open line (plane): all cells.
 void ImmersedWall::scan_around(std::size_t b, int margin) {
     const Body& body = bodies_.bodies()[b];
     const Axis& ax = grid_.x_axis();
@@ -85,10 +78,10 @@ void ImmersedWall::scan_around(std::size_t b, int margin) {
     if (!body.outline().closed()) return scan(b, 0, ax.cells() - 1, 0, ay.cells() - 1);
     const double r = body.outline().reach();
     const Vec2 c = body.state().centre;
-    scan(b, std::max(0, first_centre_at_or_after(ax, c.x() - r) - margin),
-         std::min(ax.cells() - 1, first_centre_at_or_after(ax, c.x() + r) + margin),
-         std::max(0, first_centre_at_or_after(ay, c.y() - r) - margin),
-         std::min(ay.cells() - 1, first_centre_at_or_after(ay, c.y() + r) + margin));
+    scan(b, std::max(0, cell_containing(ax, c.x() - r) - margin),
+         std::min(ax.cells() - 1, cell_containing(ax, c.x() + r) + margin),
+         std::max(0, cell_containing(ay, c.y() - r) - margin),
+         std::min(ay.cells() - 1, cell_containing(ay, c.y() + r) + margin));
 }
 
 void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {

@@ -55,32 +55,32 @@ void KEpsilon::set_initial_condition() {
 void KEpsilon::restored() {
     immersed_.locate();
     was_fluid_ = immersed_.fluid();
-    set_ghosts(k_, k_in_);
-    set_ghosts(eps_, eps_in_);
+    set_ghosts(k_, &k_in_);
+    set_ghosts(eps_, &eps_in_);
     near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
     refresh_eddy_viscosity();
 }
 
-// Ghosts: inflow values on inflow sides, zero gradient elsewhere (walls: no flux of k; outflow; slip);
-// periodic sides and patch edges by the halo exchange.
-void KEpsilon::set_ghosts(Field2D& f, double inflow) const {
+// Ghosts of k and eps: inflow values on inflow sides, zero gradient elsewhere (walls: no flux of k; outflow;
+// slip); periodic sides and patch edges by the halo exchange.
+void KEpsilon::set_ghosts(Field2D& f, const double* inflow) const {
     halo_.exchange(f);
     const int nx = grid_.nx(), ny = grid_.ny();
     for (Side s : kSides) {
         if (!grid_.touches(s)) continue;
         const BoundaryType type = config_.boundary[static_cast<int>(s)].type;
         if (type == BoundaryType::periodic) continue;
-        const bool in = type == BoundaryType::inflow;
+        const bool in = inflow && type == BoundaryType::inflow;
         for (int g = 1; g <= kGhost; ++g) {
             if (s == Side::left || s == Side::right)
                 for (int j = -kGhost; j < ny + kGhost; ++j) {
                     const int ghost = s == Side::left ? -g : nx - 1 + g, mirror = s == Side::left ? g - 1 : nx - g;
-                    f(ghost, j) = in ? inflow : f(mirror, j);
+                    f(ghost, j) = in ? *inflow : f(mirror, j);
                 }
             else
                 for (int i = -kGhost; i < nx + kGhost; ++i) {
                     const int ghost = s == Side::bottom ? -g : ny - 1 + g, mirror = s == Side::bottom ? g - 1 : ny - g;
-                    f(i, ghost) = in ? inflow : f(i, mirror);
+                    f(i, ghost) = in ? *inflow : f(i, mirror);
                 }
         }
     }
@@ -125,21 +125,26 @@ std::vector<KEpsilon::WallCell> KEpsilon::wall_cells() const {
             const double y = 0.5 * Y.w(j);
             for (int i = 0; i < nx; ++i) {
                 const double speed = std::abs(0.5 * (vel.u(i, j) + vel.u(i + 1, j)) - wall[0]);
-                out.push_back({i, j, y, WallFunction(k_(i, j), y, nu).shear(speed, y, nu), false});
+                const WallFunction wf(k_(i, j), y, nu);
+                out.push_back({i, j, y, wf.production(wf.shear(speed, y, nu), y)});
             }
         } else {
             const int i = s == Side::left ? 0 : nx - 1;
             const double y = 0.5 * X.w(i);
             for (int j = 0; j < ny; ++j) {
                 const double speed = std::abs(0.5 * (vel.v(i, j) + vel.v(i, j + 1)) - wall[1]);
-                out.push_back({i, j, y, WallFunction(k_(i, j), y, nu).shear(speed, y, nu), false});
+                const WallFunction wf(k_(i, j), y, nu);
+                out.push_back({i, j, y, wf.production(wf.shear(speed, y, nu), y)});
             }
         }
     }
     // Beside an immersed surface the cell centre may be anywhere from on the surface to a cell away: its
     // fluid part spans about [0, d + h/2], whose middle stands for its distance.
     for (const NearWallCell& c : near_wall_)
-        if (c.wall_function) out.push_back({c.i, c.j, 0.5 * (c.distance + 0.5 * c.size), c.tau_wall, true});
+        if (c.wall_function) {
+            const double y = 0.5 * (c.distance + 0.5 * c.size);
+            out.push_back({c.i, c.j, y, WallFunction(k_(c.i, c.j), y, nu).production(c.tau_wall, y)});
+        }
     return out;
 }
 
@@ -147,16 +152,12 @@ void KEpsilon::update(double dt) {
     const double nu = config_.viscosity;
     immersed_.locate();
     const Field2D& fluid = immersed_.fluid();
-    set_ghosts(k_, k_in_);
-    set_ghosts(eps_, eps_in_);
+    // k and eps ghosts are current: set at the end of the last update (or by restored()).
     near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
 
     production(P_);
     const std::vector<WallCell> walls = wall_cells();
-    for (const WallCell& w : walls) {
-        const WallFunction wf(k_(w.i, w.j), w.y, nu);
-        P_(w.i, w.j) = wf.production(w.tau_wall, w.y);
-    }
+    for (const WallCell& w : walls) P_(w.i, w.j) = w.production;
     scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
                      {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}});
 
@@ -180,8 +181,8 @@ void KEpsilon::update(double dt) {
             eps_(i, j) = n > 0.0 ? se / n : eps_in_;
         }
     was_fluid_ = fluid;
-    set_ghosts(k_, k_in_);
-    set_ghosts(eps_, eps_in_);
+    set_ghosts(k_, &k_in_);
+    set_ghosts(eps_, &eps_in_);
     refresh_eddy_viscosity();
 }
 
@@ -198,18 +199,7 @@ void KEpsilon::refresh_eddy_viscosity() {
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) e.cell(i, j) = model_nu_t_(i, j);
     for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
-    halo_.exchange(e.cell);
-    for (Side s : kSides) {  // zero gradient across the domain boundary
-        if (!grid_.touches(s) || config_.boundary[static_cast<int>(s)].type == BoundaryType::periodic) continue;
-        for (int g = 1; g <= kGhost; ++g) {
-            if (s == Side::left || s == Side::right)
-                for (int j = -kGhost; j < ny + kGhost; ++j)
-                    e.cell(s == Side::left ? -g : nx - 1 + g, j) = e.cell(s == Side::left ? g - 1 : nx - g, j);
-            else
-                for (int i = -kGhost; i < nx + kGhost; ++i)
-                    e.cell(i, s == Side::bottom ? -g : ny - 1 + g) = e.cell(i, s == Side::bottom ? g - 1 : ny - g);
-        }
-    }
+    set_ghosts(e.cell, nullptr);  // zero gradient across every domain side
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i)
             e.corner(i, j) = 0.25 * (e.cell(i - 1, j - 1) + e.cell(i, j - 1) + e.cell(i - 1, j) + e.cell(i, j));

@@ -52,10 +52,12 @@ public:
 private:
     struct WallCell {
         int i, j;
-        double y, tau_wall;
-        bool immersed;
+        double y;           // distance the log law is applied at
+        double production;  // P_k from the wall shear
     };
-    void set_ghosts(Field2D& f, double inflow) const;
+    // Halo exchange, then the domain sides: `inflow` on inflow sides (null: zero gradient there too), zero
+    // gradient on the others; periodic sides by the exchange.
+    void set_ghosts(Field2D& f, const double* inflow) const;
     void production(Field2D& P) const;
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
     void refresh_eddy_viscosity();

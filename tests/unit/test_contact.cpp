@@ -212,13 +212,23 @@ TEST(Contact, SlidingDownASlopeWithFriction) {
     EXPECT_NEAR(gap(kBlock, s, plane).distance, 0.0, 1e-12);
 }
 
-// The Beranger model's free fall against its closed form (the study's block in water: C_D 2, C_a 0.5).
-TEST(LumpedModel, BerangerFreeFallMatchesItsClosedForm) {
+namespace {
+
+// The study's block (0.3 m square, 2500 kg/m^3, per metre of depth) in still water.
+LumpedModelConfig study_block_in_water() {
     LumpedModelConfig model;
     model.mass = 2500.0 * 0.09;
     model.volume = 0.09;
     model.fluid_density = 1000.0;
     model.frontal_area = 0.3;
+    return model;
+}
+
+}  // namespace
+
+// The Beranger model's free fall against its closed form (the study's block in water: C_D 2, C_a 0.5).
+TEST(LumpedModel, BerangerFreeFallMatchesItsClosedForm) {
+    LumpedModelConfig model = study_block_in_water();
     const BerangerFreeFall exact = beranger_free_fall(model);
     // Terminal speed sqrt(2 (rho_s/rho_f - 1) g L / C_D) = sqrt(1.5 * 9.81 * 0.3) = 2.10 m/s (VALIDATION.md).
     EXPECT_NEAR(exact.terminal_speed, std::sqrt(2.0 * 1.5 * g * 0.3 / 2.0), 1e-12);
@@ -234,11 +244,7 @@ TEST(LumpedModel, BerangerFreeFallMatchesItsClosedForm) {
 
 // A current carries the block sideways until it drifts with it (the study's 1 m/s current, Fig. 5).
 TEST(LumpedModel, CurrentCarriesTheBlock) {
-    LumpedModelConfig model;
-    model.mass = 2500.0 * 0.09;
-    model.volume = 0.09;
-    model.fluid_density = 1000.0;
-    model.frontal_area = 0.3;
+    LumpedModelConfig model = study_block_in_water();
     model.current = Vec2(1.0, 0.0);
     BodyState s;
     s.centre = Vec2(0.0, 100.0);

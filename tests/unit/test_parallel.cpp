@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 #include "flow_solver.hpp"
 #include "gather.hpp"
@@ -54,6 +56,17 @@ std::array<double, 2> compare_np(CaseConfig c, int steps, std::array<int, 2> ran
     }
     MPI_Bcast(diff.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     return diff;
+}
+
+// run(comm, ranks) -> std::array<double, N> on all ranks split {1, 2}, and on rank 0 alone; the second
+// (serial) result is broadcast so every rank can compare.
+template <class Run>
+auto parallel_and_serial(Run run) {
+    const auto parallel = run(MPI_COMM_WORLD, std::array<int, 2>{1, 2});
+    std::remove_const_t<decltype(parallel)> serial{};
+    if (rank() == 0) serial = run(MPI_COMM_SELF, std::array<int, 2>{0, 0});
+    MPI_Bcast(serial.data(), static_cast<int>(serial.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    return std::pair{parallel, serial};
 }
 
 CaseConfig cavity() {
@@ -177,10 +190,7 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
                                      b.surface.viscous.x(), b.surface.viscous.y()};
     };
     // Two patches split in y: 82 cells at 41 puts the patch boundary at y = 0.205, through the cylinder.
-    const auto parallel = run(MPI_COMM_WORLD, {1, 2});
-    std::array<double, 6> serial{};
-    if (rank() == 0) serial = run(MPI_COMM_SELF, {0, 0});
-    MPI_Bcast(serial.data(), 6, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const auto [parallel, serial] = parallel_and_serial(run);
     const double scale = std::abs(serial[0]);
     double worst = 0.0;
     for (int k = 0; k < 6; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / scale);
@@ -233,10 +243,7 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
         return std::array<double, 8>{b.forcing.x(), b.forcing.y(), b.surface.pressure.x(), b.surface.viscous.x(),
                                      b.surface.turbulent.x(), b.surface.turbulent.y(), b.surface.pressure.y(), kmax};
     };
-    const auto parallel = run(MPI_COMM_WORLD, {1, 2});
-    std::array<double, 8> serial{};
-    if (rank() == 0) serial = run(MPI_COMM_SELF, {0, 0});
-    MPI_Bcast(serial.data(), 8, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const auto [parallel, serial] = parallel_and_serial(run);
     double worst = 0.0;
     for (int k = 0; k < 7; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / std::abs(serial[0]));
     const double k_difference = std::abs(parallel[7] - serial[7]) / serial[7];
