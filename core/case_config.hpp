@@ -140,6 +140,7 @@ struct CaseConfig {
     long max_steps = -1;          // -1: no limit
     double cfl = 0.3;             // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
     double diffusion_number = 0.2; // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
+    bool implicit_diffusion = false; // backward Euler for the viscous stress (core/implicit_diffusion.hpp)
     std::optional<double> fixed_dt;
     double max_dt = 1e30;
     double poisson_tolerance = 1e-8;

@@ -437,6 +437,15 @@ std::vector<CaseKey> make_schema() {
          .max = at_most(0.25),
          .meaning = "Diffusion number d of the adaptive time step: dt <= d / (nu (1/dx^2 + 1/dy^2)); "
                     "the explicit update is stable up to 1/4."},
+        {.path = "numerics.diffusion",
+         .type = K::choice,
+         .default_value = "auto",
+         .choices = {"auto", "explicit", "implicit"},
+         .meaning = "Time integration of the viscous and turbulent stress: `explicit` (Adams-Bashforth 2, "
+                    "second order, step limited by diffusion_number) or `implicit` (backward Euler for the "
+                    "normal and same-direction shear terms, first order, no diffusion limit on the step; "
+                    "core/implicit_diffusion.hpp). `auto`: implicit with k-epsilon, whose eddy viscosity "
+                    "would otherwise set the step, explicit for laminar runs."},
         {.path = "numerics.dt",
          .type = K::number_or_auto,
          .default_value = "auto",
@@ -976,6 +985,9 @@ class Reader {
                                                   {"koren", ConvectionScheme::koren}});
         c.cfl = number("numerics.cfl");
         c.diffusion_number = number("numerics.diffusion_number");
+        const std::string diffusion = choice("numerics.diffusion");
+        c.implicit_diffusion = diffusion == "implicit" ||
+                               (diffusion == "auto" && c.turbulence.model == TurbulenceModelType::k_epsilon);
         c.fixed_dt = number_or_auto("numerics.dt");
         c.max_dt = number("numerics.max_dt");
         if (c.fixed_dt && *c.fixed_dt > c.max_dt)

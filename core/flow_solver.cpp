@@ -36,6 +36,7 @@ FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config
     for (Side s : kSides) dirichlet[static_cast<int>(s)] = bc_->pressure_dirichlet(s);
     poisson_ = std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance,
                                                config_.poisson_max_iterations);
+    if (config_.implicit_diffusion) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);
     p_ = p_old_ = phi_ = source_ = Field2D(*grid_);
     eddy_ = EddyViscosity(*grid_);
@@ -93,14 +94,16 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
 
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
-    const double nu = config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
+    const double nu = implicit_ ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
     const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number);
     return std::min(limits.stable(), config_.max_dt);
 }
 
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
     convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs);
-    if (eddy_on_)
+    if (implicit_)
+        add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
+    else if (eddy_on_)
         add_viscous_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else
         add_diffusion(*grid_, config_.viscosity, vel, bc_->u_first(), bc_->v_first(), rhs);
@@ -163,6 +166,12 @@ double FlowSolver::predict(double dt) {
     explicit_rhs(vel_, rhs_);
     predict_velocity(dt, r);
     bc_->set_outflow(vel_, star_, dt);
+    if (implicit_) {
+        halo_->exchange(star_);
+        bc_->apply(star_);
+        pending_.diffusion_iterations = implicit_->apply(config_.viscosity, eddy_, dt, star_);
+        bc_->set_outflow(vel_, star_, dt);  // a zero-stress outflow face copies the corrected interior
+    }
     pressure_increment_guess(r);
     pending_.seconds_momentum = seconds_since(t0);
     return dt;

@@ -9,6 +9,8 @@
 //     H^n  = -C(u^n) + nu L(u^n) + f
 //     u*   = u^n + dt [ (1 + r/2) H^n - (r/2) H^{n-1} - grad p^{n-1/2} ],   r = dt^n / dt^{n-1}
 //     boundary faces of u* (inflow, wall, outflow)
+//   with implicit diffusion H^n keeps only the cross terms of the stress and u* then takes the backward-Euler
+//   step of the rest (core/implicit_diffusion.hpp)
 //   (an immersed-boundary forcing may edit u* here: ibm/direct_forcing)
 //   project:
 //     laplacian(phi) = div(u*) / dt          (hypre PCG + PFMG, starting from r (p^{n-1/2} - p^{n-3/2}))
@@ -22,6 +24,7 @@
 #include "case_config.hpp"
 #include "field.hpp"
 #include "halo_exchange.hpp"
+#include "implicit_diffusion.hpp"
 #include "poisson_solver.hpp"
 #include "viscous_stress.hpp"
 
@@ -30,6 +33,7 @@ namespace chute {
 struct StepStats {
     double dt = 0.0;
     int poisson_iterations = 0;
+    int diffusion_iterations = 0;    // implicit diffusion: PCG iterations of the larger component
     double poisson_residual = 0.0;
     double seconds_momentum = 0.0;   // prediction incl. boundary conditions
     double seconds_poisson = 0.0;    // right-hand side, hypre solve
@@ -51,10 +55,12 @@ public:
     double predict(double dt = 0.0);
     Velocity& predicted() { return star_; }
     StepStats project();
-    // The step advance() would take: min of the CFL and diffusion limits, max_dt, or the fixed dt.
+    // The step advance() would take: min of the CFL and diffusion limits (none with implicit diffusion),
+    // max_dt, or the fixed dt.
     double next_dt() const;
     // A turbulence model writes its eddy viscosity here (turbulence/); from then on the momentum equation
-    // uses div[(nu + nu_t)(grad u + grad u^T)] and the diffusion limit of the step counts nu + max nu_t.
+    // uses div[(nu + nu_t)(grad u + grad u^T)] and the diffusion limit of the step counts nu + max nu_t
+    // (explicit diffusion only).
     EddyViscosity& eddy_viscosity() {
         eddy_on_ = true;
         return eddy_;
@@ -92,6 +98,7 @@ private:
     std::unique_ptr<HaloExchange> halo_;
     std::unique_ptr<BoundaryConditions> bc_;
     std::unique_ptr<PoissonSolver> poisson_;
+    std::unique_ptr<ImplicitDiffusion> implicit_;  // with numerics.diffusion implicit
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
     StepStats pending_;  // the predict() half of the step being taken

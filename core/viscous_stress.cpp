@@ -35,4 +35,26 @@ void add_viscous_stress(const Grid& grid, double nu, const EddyViscosity& eddy, 
         }
 }
 
+void add_cross_stress(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int u_first,
+                      int v_first, Velocity& out) {
+    const auto& X = grid.lx();
+    const auto& Y = grid.ly();
+    const int nx = grid.nx(), ny = grid.ny();
+    const Field2D& u = vel.u;
+    const Field2D& v = vel.v;
+    const Field2D& nk = eddy.corner;
+    for (int j = 0; j < ny; ++j)
+        for (int i = u_first; i < nx; ++i) {
+            const double north = (nu + nk(i, j + 1)) * (v(i, j + 1) - v(i - 1, j + 1)) / X.dc(i);
+            const double south = (nu + nk(i, j)) * (v(i, j) - v(i - 1, j)) / X.dc(i);
+            out.u(i, j) += (north - south) / Y.w(j);
+        }
+    for (int j = v_first; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double east = (nu + nk(i + 1, j)) * (u(i + 1, j) - u(i + 1, j - 1)) / Y.dc(j);
+            const double west = (nu + nk(i, j)) * (u(i, j) - u(i, j - 1)) / Y.dc(j);
+            out.v(i, j) += (east - west) / X.w(i);
+        }
+}
+
 }  // namespace chute

@@ -24,4 +24,9 @@ struct EddyViscosity {
 void add_viscous_stress(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int u_first,
                         int v_first, Velocity& out);
 
+// out += the cross terms d/dy[(nu + nu_t) dv/dx] (u faces) and d/dx[(nu + nu_t) du/dy] (v faces): the part
+// of the stress left explicit when the rest is implicit (implicit_diffusion.hpp).
+void add_cross_stress(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int u_first,
+                      int v_first, Velocity& out);
+
 }  // namespace chute

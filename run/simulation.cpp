@@ -193,7 +193,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     auto last_progress = loop_start;
     const double start_time = solver.time();
     double t_momentum = 0, t_poisson = 0, t_correction = 0, t_output = 0, t_forcing = 0, t_turbulence = 0,
-           iterations = 0;
+           iterations = 0, diffusion_iterations = 0;
     summary.seconds_per_step_min = std::numeric_limits<double>::infinity();
     double ke = 0.0, div = 0.0, first_dt = 0.0;
 
@@ -257,6 +257,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         t_forcing += st.seconds_forcing;
         t_turbulence += st.seconds_turbulence;
         iterations += st.poisson_iterations;
+        diffusion_iterations += st.diffusion_iterations;
         summary.seconds_per_step_min = std::min(summary.seconds_per_step_min, step_seconds);
         summary.seconds_per_step_max = std::max(summary.seconds_per_step_max, step_seconds);
 
@@ -299,6 +300,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         summary.share_forcing = t_forcing / total;
         summary.share_turbulence = t_turbulence / total;
         summary.mean_poisson_iterations = iterations / summary.steps;
+        summary.mean_diffusion_iterations = diffusion_iterations / summary.steps;
         summary.cell_steps_per_second = static_cast<double>(grid.global_cells()) * summary.steps / total;
     } else {
         summary.seconds_per_step_min = 0.0;
@@ -324,6 +326,11 @@ std::string format_summary(const RunSummary& s, long long cells) {
                       s.mean_poisson_iterations, 100 * s.share_correction, 100 * s.share_turbulence,
                       100 * s.share_output);
         o << buf;
+        if (s.mean_diffusion_iterations > 0.0) {
+            std::snprintf(buf, sizeof buf, "implicit diffusion: %.1f PCG iterations/step (momentum share)\n",
+                          s.mean_diffusion_iterations);
+            o << buf;
+        }
         std::snprintf(buf, sizeof buf, "speed: %.3g cell-steps per second\n", s.cell_steps_per_second);
         o << buf;
     }

@@ -158,17 +158,28 @@ void KEpsilon::update(double dt) {
     production(P_);
     const std::vector<WallCell> walls = wall_cells();
     for (const WallCell& w : walls) P_(w.i, w.j) = w.production;
-    scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
-                     {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}});
-
-    for (int j = 0; j < grid_.ny(); ++j)
-        for (int i = 0; i < grid_.nx(); ++i) {
-            if (fluid(i, j) == 0.0) continue;
-            const double k = k_(i, j), e = eps_(i, j), rate = e / k;
-            k_(i, j) = std::max(k_floor_, (k + dt * (tk_(i, j) + P_(i, j))) / (1.0 + dt * rate));
-            eps_(i, j) = std::max(eps_floor_, (e + dt * (te_(i, j) + C::c1 * rate * P_(i, j))) / (1.0 + dt * C::c2 * rate));
+    // The transport is explicit: when the flow step (with implicit momentum diffusion free of the eddy
+    // viscosity's limit) exceeds the diffusion limit of k and eps, the update is split into equal sub-steps.
+    const int substeps = substeps_for(dt);
+    const double h = dt / substeps;
+    for (int sub = 0; sub < substeps; ++sub) {
+        if (sub > 0) {
+            set_ghosts(k_, &k_in_);
+            set_ghosts(eps_, &eps_in_);
         }
-    for (const WallCell& w : walls) eps_(w.i, w.j) = std::max(eps_floor_, WallFunction(k_(w.i, w.j), w.y, nu).dissipation(k_(w.i, w.j), w.y, nu));
+        scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
+                         {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}});
+        for (int j = 0; j < grid_.ny(); ++j)
+            for (int i = 0; i < grid_.nx(); ++i) {
+                if (fluid(i, j) == 0.0) continue;
+                const double k = k_(i, j), e = eps_(i, j), rate = e / k;
+                k_(i, j) = std::max(k_floor_, (k + h * (tk_(i, j) + P_(i, j))) / (1.0 + h * rate));
+                eps_(i, j) = std::max(eps_floor_, (e + h * (te_(i, j) + C::c1 * rate * P_(i, j))) / (1.0 + h * C::c2 * rate));
+            }
+        for (const WallCell& w : walls)
+            eps_(w.i, w.j) = std::max(eps_floor_, WallFunction(k_(w.i, w.j), w.y, nu).dissipation(k_(w.i, w.j), w.y, nu));
+    }
+    last_substeps_ = substeps;
 
     // Cells the bodies uncovered this step start from their fluid neighbours.
     for (int j = 0; j < grid_.ny(); ++j)
@@ -184,6 +195,22 @@ void KEpsilon::update(double dt) {
     set_ghosts(k_, &k_in_);
     set_ghosts(eps_, &eps_in_);
     refresh_eddy_viscosity();
+}
+
+// Explicit diffusion of k (the larger diffusivity, sigma_k <= sigma_eps) is stable for
+// h (nu + nu_t / sigma_k)(1/dx^2 + 1/dy^2) <= numerics.diffusion_number (time_step_control.hpp).
+int KEpsilon::substeps_for(double dt) const {
+    const auto& X = grid_.lx();
+    const auto& Y = grid_.ly();
+    const Field2D& fluid = immersed_.fluid();
+    double rate = 0.0;
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i)
+            if (fluid(i, j) != 0.0)
+                rate = std::max(rate, (config_.viscosity + model_nu_t_(i, j) / C::sigma_k) *
+                                          (1.0 / (X.w(i) * X.w(i)) + 1.0 / (Y.w(j) * Y.w(j))));
+    MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
+    return std::max(1, static_cast<int>(std::ceil(dt * rate / config_.diffusion_number)));
 }
 
 // nu_t = C_mu k^2 / eps in the fluid, 0 inside bodies, at least the wall eddy viscosity in the immersed

@@ -6,7 +6,7 @@
 //   nu_t = C_mu k^2 / eps,     P_k = nu_t S^2,  S^2 = 2 S_ij S_ij
 //
 // One update per flow step, after the projection (DESIGN.md data flow), from u^{n+1}:
-//   transport  explicit, bounded (scalar_transport.hpp)
+//   transport  explicit, bounded (scalar_transport.hpp), in sub-steps when dt exceeds its diffusion limit
 //   sources    P_k explicit (optionally limited, P_k <= limit * eps), the sinks implicit:
 //              k^{n+1} = (k^n + dt (T_k + P_k)) / (1 + dt eps^n / k^n), likewise for eps with C_2,
 //              so neither can turn negative from its source (Patankar 1980, source linearisation)
@@ -38,6 +38,8 @@ public:
     void update(double dt);
     // After k and eps were read from a checkpoint.
     void restored();
+    // Sub-steps of the last update (1 unless dt exceeded the explicit diffusion limit of k and eps).
+    int last_substeps() const { return last_substeps_; }
     // Empty, or what went wrong (non-finite k or eps, nu_t beyond 1e8 nu): collective.
     std::optional<std::string> check() const;
 
@@ -61,6 +63,7 @@ private:
     void production(Field2D& P) const;
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
     void refresh_eddy_viscosity();
+    int substeps_for(double dt) const;
 
     const CaseConfig& config_;
     FlowSolver& flow_;
@@ -70,6 +73,7 @@ private:
     Field2D k_, eps_, model_nu_t_, P_, tk_, te_, was_fluid_;
     std::vector<NearWallCell> near_wall_;
     double k_in_ = 0.0, eps_in_ = 0.0, k_floor_ = 0.0, eps_floor_ = 0.0;
+    int last_substeps_ = 1;
 };
 
 }  // namespace chute

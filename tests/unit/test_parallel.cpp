@@ -154,6 +154,23 @@ TEST(Parallel, PeriodicKoren) {
     EXPECT_LT(std::max(d1[1], d2[1]), kTolerance);
 }
 
+// Implicit diffusion (core/implicit_diffusion.hpp): the hypre systems of u and v span both patches, with
+// wall, inflow and outflow rows, and periodic ones. The step follows the CFL number alone (about 1.5 times
+// the explicit diffusion limit in the channels, whose tanh grid has 0.02-wide cells at the walls).
+TEST(Parallel, ImplicitDiffusionChannelAndPeriodic) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    auto implicit = [](CaseConfig c) {
+        c.implicit_diffusion = true;
+        return c;
+    };
+    for (const auto& d : {compare_np(implicit(channel(OutflowKind::zero_stress)), 100, {2, 1}),
+                          compare_np(implicit(channel(OutflowKind::convective)), 100, {1, 2}),
+                          compare_np(implicit(periodic()), 100, {2, 1}), compare_np(implicit(periodic()), 100, {1, 2})}) {
+        EXPECT_LT(d[0], kTolerance);
+        EXPECT_LT(d[1], kTolerance);
+    }
+}
+
 // The same fixed-cylinder case (DFG 2D-1 geometry, D/h = 20, 60 steps) gives the same forces on 1 and 2 ranks:
 // the markers' stencils straddle the patch boundary (the split runs through the cylinder), interpolation and
 // spreading are summed over ranks. Tolerance 1e-8 relative: the Poisson solves stop at 1e-10.
