@@ -100,6 +100,9 @@ struct LumpedConfig {
 // laminar: nu only. k_epsilon: standard k-epsilon (Launder & Spalding 1974) with log-law wall functions on
 // no-slip sides and immersed surfaces; nu_t = C_mu k^2 / eps enters the momentum equation.
 enum class TurbulenceModelType { laminar, k_epsilon };
+// explicit: AB2; implicit: backward Euler (core/implicit_diffusion.hpp); automatic: explicit for laminar runs,
+// with an eddy viscosity implicit for the steps the explicit diffusion limit would shorten.
+enum class DiffusionScheme { explicit_ab2, implicit_euler, automatic };
 
 struct TurbulenceConfig {
     TurbulenceModelType model = TurbulenceModelType::laminar;
@@ -140,7 +143,7 @@ struct CaseConfig {
     long max_steps = -1;          // -1: no limit
     double cfl = 0.3;             // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
     double diffusion_number = 0.2; // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
-    bool implicit_diffusion = false; // backward Euler for the viscous stress (core/implicit_diffusion.hpp)
+    DiffusionScheme diffusion = DiffusionScheme::automatic;  // time integration of the stress (flow_solver.hpp)
     std::optional<double> fixed_dt;
     double max_dt = 1e30;
     double poisson_tolerance = 1e-8;

@@ -444,8 +444,10 @@ std::vector<CaseKey> make_schema() {
          .meaning = "Time integration of the viscous and turbulent stress: `explicit` (Adams-Bashforth 2, "
                     "second order, step limited by diffusion_number) or `implicit` (backward Euler for the "
                     "normal and same-direction shear terms, first order, no diffusion limit on the step; "
-                    "core/implicit_diffusion.hpp). `auto`: implicit with k-epsilon, whose eddy viscosity "
-                    "would otherwise set the step, explicit for laminar runs."},
+                    "core/implicit_diffusion.hpp). `auto`: explicit for laminar runs; with k-epsilon the step "
+                    "follows the CFL number alone and each step is implicit when it exceeds the explicit "
+                    "diffusion limit of nu + max nu_t (and stays implicit until the step is below 2/3 of that "
+                    "limit); the step after a switch is forward Euler."},
         {.path = "numerics.dt",
          .type = K::number_or_auto,
          .default_value = "auto",
@@ -985,9 +987,10 @@ class Reader {
                                                   {"koren", ConvectionScheme::koren}});
         c.cfl = number("numerics.cfl");
         c.diffusion_number = number("numerics.diffusion_number");
-        const std::string diffusion = choice("numerics.diffusion");
-        c.implicit_diffusion = diffusion == "implicit" ||
-                               (diffusion == "auto" && c.turbulence.model == TurbulenceModelType::k_epsilon);
+        c.diffusion = to_enum<DiffusionScheme>("numerics.diffusion", choice("numerics.diffusion"),
+                                               {{"explicit", DiffusionScheme::explicit_ab2},
+                                                {"implicit", DiffusionScheme::implicit_euler},
+                                                {"auto", DiffusionScheme::automatic}});
         c.fixed_dt = number_or_auto("numerics.dt");
         c.max_dt = number("numerics.max_dt");
         if (c.fixed_dt && *c.fixed_dt > c.max_dt)

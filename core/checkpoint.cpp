@@ -60,6 +60,7 @@ void write_checkpoint(const Grid& grid, const std::filesystem::path& path, const
             file.set_double_attribute("/", "time", header.time);
             file.set_double_attribute("/", "dt", header.dt);
             file.set_double_attribute("/", "dt_previous", header.dt_previous);
+            file.set_int_attribute("/", "implicit_diffusion", header.implicit_diffusion ? 1 : 0);
             file.write("grid/x_lines", grid.x_axis().lines());
             file.write("grid/y_lines", grid.y_axis().lines());
             for (std::size_t k = 0; k < fields.size(); ++k) {
@@ -110,6 +111,8 @@ CheckpointHeader read_checkpoint(const Grid& grid, const std::filesystem::path& 
         header.time = file.double_attribute("/", "time");
         header.dt = file.double_attribute("/", "dt");
         header.dt_previous = file.double_attribute("/", "dt_previous");
+        header.implicit_diffusion =
+            file.has_attribute("/", "implicit_diffusion") && file.int_attribute("/", "implicit_diffusion") != 0;
 
         for (const CheckpointField& f : fields) {
             const std::string name = field_dataset(f.name);

@@ -36,6 +36,7 @@ struct CheckpointHeader {
     double time = 0.0;
     double dt = 0.0;
     double dt_previous = 0.0;
+    bool implicit_diffusion = false;  // the last step's diffusion scheme (absent in older files: false)
 };
 
 // Collective. Writes `path` atomically (path.tmp, then rename): an older file of that name stays intact

@@ -36,7 +36,7 @@ FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config
     for (Side s : kSides) dirichlet[static_cast<int>(s)] = bc_->pressure_dirichlet(s);
     poisson_ = std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance,
                                                config_.poisson_max_iterations);
-    if (config_.implicit_diffusion) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
+    implicit_now_ = config_.diffusion == DiffusionScheme::implicit_euler;
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);
     p_ = p_old_ = phi_ = source_ = Field2D(*grid_);
     eddy_ = EddyViscosity(*grid_);
@@ -78,8 +78,9 @@ void FlowSolver::refresh_ghosts() {
     bc_->apply_pressure(p_);
 }
 
-void FlowSolver::restore(long step, double time, double dt_previous) {
+void FlowSolver::restore(long step, double time, double dt_previous, bool implicit_diffusion) {
     step_ = step;
+    if (config_.diffusion == DiffusionScheme::automatic) implicit_now_ = implicit_diffusion;
     time_ = time;
     dt_previous_ = dt_previous;
     pressure_history_ = step > 0;  // the checkpoint carries p^{n-1}
@@ -94,14 +95,33 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
 
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
-    const double nu = implicit_ ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
+    const bool cfl_only = config_.diffusion == DiffusionScheme::implicit_euler ||
+                          (config_.diffusion == DiffusionScheme::automatic && eddy_on_);
+    const double nu = cfl_only ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
     const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number);
     return std::min(limits.stable(), config_.max_dt);
 }
 
+double FlowSolver::diffusion_limit() const {
+    const double nu = config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
+    return time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number).diffusive;
+}
+
+// `auto` goes implicit when the step exceeds the explicit limit and back once it is below 2/3 of it, so that
+// a limit hovering near the CFL step does not switch (and drop to a forward-Euler step) every few steps.
+bool FlowSolver::implicit_step(double dt) const {
+    switch (config_.diffusion) {
+        case DiffusionScheme::explicit_ab2: return false;
+        case DiffusionScheme::implicit_euler: return true;
+        case DiffusionScheme::automatic: break;
+    }
+    if (!eddy_on_) return false;
+    return dt > (implicit_now_ ? 2.0 / 3.0 : 1.0) * diffusion_limit();
+}
+
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
     convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs);
-    if (implicit_)
+    if (implicit_now_)
         add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else if (eddy_on_)
         add_viscous_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
@@ -158,7 +178,11 @@ double FlowSolver::predict(double dt) {
     pending_ = StepStats{};
     if (dt <= 0.0) dt = next_dt();
     pending_.dt = dt;
-    const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;  // 0: forward Euler on the first step
+    double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;  // 0: forward Euler on the first step
+    // H^{n-1} holds the stress of the last step's scheme: after a switch this step is forward Euler.
+    const bool implicit = implicit_step(dt);
+    if (implicit != implicit_now_) r = 0.0;
+    implicit_now_ = implicit;
 
     // Momentum prediction (AB2 with the last pressure gradient), then the boundary faces of u*
     // (prescribed, convective or zero-stress).
@@ -166,7 +190,8 @@ double FlowSolver::predict(double dt) {
     explicit_rhs(vel_, rhs_);
     predict_velocity(dt, r);
     bc_->set_outflow(vel_, star_, dt);
-    if (implicit_) {
+    if (implicit_now_) {
+        if (!implicit_) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
         halo_->exchange(star_);
         bc_->apply(star_);
         pending_.diffusion_iterations = implicit_->apply(config_.viscosity, eddy_, dt, star_);

@@ -82,13 +82,17 @@ public:
     Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
     Field2D& previous_pressure() { return p_old_; }  // p^{n-3/2}, for the Poisson solver's starting guess
     double previous_dt() const { return dt_previous_; }
-    void restore(long step, double time, double dt_previous);
+    // Whether the last step's diffusion was implicit (checkpoints carry it: `auto` switches with hysteresis).
+    bool implicit_diffusion() const { return implicit_now_; }
+    void restore(long step, double time, double dt_previous, bool implicit_diffusion = false);
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
 
 private:
     void explicit_rhs(const Velocity& vel, Velocity& rhs) const;      // H = -C(u) + nu L(u)
+    double diffusion_limit() const;                                   // explicit limit with nu + max nu_t
+    bool implicit_step(double dt) const;                              // the scheme of a step of size dt
     void predict_velocity(double dt, double r);                       // u* from u^n, H^n, H^{n-1}, f, p
     void pressure_increment_guess(double r);                          // phi <- r (p^n - p^{n-1})
     double poisson_residual_floor(double dt) const;                   // absolute tolerance of the solve
@@ -98,7 +102,8 @@ private:
     std::unique_ptr<HaloExchange> halo_;
     std::unique_ptr<BoundaryConditions> bc_;
     std::unique_ptr<PoissonSolver> poisson_;
-    std::unique_ptr<ImplicitDiffusion> implicit_;  // with numerics.diffusion implicit
+    std::unique_ptr<ImplicitDiffusion> implicit_;  // made at the first implicit step
+    bool implicit_now_ = false;  // the scheme of the last step (numerics.diffusion auto switches)
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
     StepStats pending_;  // the predict() half of the step being taken

@@ -111,7 +111,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
                                      std::to_string(grid.global_ny()));
         solver.set_grid_lines(xl, yl);
         const CheckpointHeader h = read_checkpoint(grid, *options.restart, checkpoint_fields(solver, turbulence.get()));
-        solver.restore(h.step, h.time, h.dt_previous);
+        solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
         free_bodies.restore(*options.restart);
     }
     bodies.move_to(solver.time());
@@ -150,7 +150,9 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     };
     auto write_checkpoint_now = [&] {
         const auto path = checkpoint_path(options.out_dir, solver.step());
-        write_checkpoint(grid, path, {solver.step(), solver.time(), solver.previous_dt(), solver.previous_dt()},
+        write_checkpoint(grid, path,
+                         {solver.step(), solver.time(), solver.previous_dt(), solver.previous_dt(),
+                          solver.implicit_diffusion()},
                          checkpoint_fields(solver, turbulence.get()), free_bodies.checkpoint_arrays());
         prune_checkpoints(options.out_dir, config.checkpoints_kept);
         return path;
@@ -273,9 +275,9 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             last_progress = clock::now();
             const double wall = since(loop_start);
             const double done = (solver.time() - start_time) / (config.end_time - start_time);
-            std::printf("step %8ld  t = %-11.5g dt = %-10.4g  |div| = %-9.2e  poisson it %3d  wall %s  left %s\n",
-                        solver.step(), solver.time(), st.dt, div, st.poisson_iterations, format_hms(wall).c_str(),
-                        format_hms(done > 0 ? wall * (1.0 - done) / done : NAN).c_str());
+            std::printf("step %8ld  t = %-11.5g dt = %-10.4g  |div| = %-9.2e  poisson it %3d  diffusion it %3d  wall %s  left %s\n",
+                        solver.step(), solver.time(), st.dt, div, st.poisson_iterations, st.diffusion_iterations,
+                        format_hms(wall).c_str(), format_hms(done > 0 ? wall * (1.0 - done) / done : NAN).c_str());
             std::fflush(stdout);
         }
     }

@@ -35,7 +35,7 @@ struct ShearMode {
         for (auto& b : c.boundary) b.type = BoundaryType::periodic;
         for (int s : along_y ? std::array{0, 1} : std::array{2, 3}) c.boundary[s].type = sides;
         c.viscosity = 0.01;
-        c.implicit_diffusion = true;
+        c.diffusion = DiffusionScheme::implicit_euler;
         c.poisson_tolerance = 1e-12;
         dt = 100.0 * 0.25 * h * h / c.viscosity;
         c.fixed_dt = dt;
@@ -143,4 +143,44 @@ TEST(ImplicitDiffusion, PartsSumToTheFullStress) {
     std::printf("implicit + cross against the full stress: max difference %.2e of max |stress| %.3e\n", err, scale);
     // du is computed to round-off of u (1e-16) divided by dt (1e-9): 1e-7 absolute, about 1e-6 relative.
     EXPECT_LT(err, 1e-5 * scale);
+}
+
+// numerics.diffusion auto: explicit without an eddy viscosity; with one, the step follows the CFL number
+// alone, and a step is implicit once it exceeds the explicit diffusion limit, explicit again once it is
+// below 2/3 of it (hysteresis), and the flag is what checkpoints carry.
+TEST(ImplicitDiffusion, AutoSwitchesAtTheExplicitLimit) {
+    CaseConfig c;
+    const double L = 2.0 * std::numbers::pi;
+    c.x = AxisConfig{0.0, L, 16, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{0.0, L, 16, "uniform", 2.0, 1.05, {}};
+    for (auto& b : c.boundary) b.type = BoundaryType::periodic;
+    c.initial = InitialCondition::taylor_green;
+    c.viscosity = 1e-3;
+    c.cfl = 0.3;
+    FlowSolver s(c, MPI_COMM_WORLD);
+    s.advance();
+    EXPECT_FALSE(s.implicit_diffusion()) << "laminar: explicit";
+    const double h = L / 16;
+    auto set_eddy = [&](double nu_t) {
+        EddyViscosity& e = s.eddy_viscosity();
+        e.cell.fill(nu_t);
+        e.corner.fill(nu_t);
+        e.max = nu_t;
+    };
+    // The explicit limit for nu_e is d / (nu_e 2 / h^2); pick nu_t so that limit = factor * CFL step.
+    auto nu_t_for = [&](double factor) {
+        const double dt = s.next_dt();
+        return c.diffusion_number * h * h / (2.0 * factor * dt) - c.viscosity;
+    };
+    set_eddy(nu_t_for(0.5));
+    const double cfl_step = s.next_dt();
+    s.advance();
+    EXPECT_TRUE(s.implicit_diffusion()) << "limit at half the CFL step: implicit";
+    EXPECT_NEAR(s.previous_dt(), cfl_step, 1e-12) << "the step follows the CFL number";
+    set_eddy(nu_t_for(1.2));
+    s.advance();
+    EXPECT_TRUE(s.implicit_diffusion()) << "step at 1/1.2 of the limit, above 2/3: stays implicit";
+    set_eddy(nu_t_for(2.0));
+    s.advance();
+    EXPECT_FALSE(s.implicit_diffusion()) << "step at half the limit: back to explicit";
 }

@@ -174,7 +174,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
     fill_local(g, out.u, 1, 0, 1);
     fill_local(g, out.v, 0, 1, 2);
     fill_local(g, out.p, 0, 0, 3);
-    const CheckpointHeader header{1234, 0.1 + 0.2, 1.0 / 3.0, 2.0 / 7.0};
+    const CheckpointHeader header{1234, 0.1 + 0.2, 1.0 / 3.0, 2.0 / 7.0, true};
     const fs::path path = checkpoint_path(dir.path(), header.step);
     EXPECT_EQ(path.filename(), "checkpoint_001234.h5");
     write_checkpoint(g, path, header, out.list());
@@ -185,6 +185,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
     EXPECT_EQ(back.time, header.time);
     EXPECT_EQ(back.dt, header.dt);
     EXPECT_EQ(back.dt_previous, header.dt_previous);
+    EXPECT_TRUE(back.implicit_diffusion);
     CheckpointFixtureFields expected(g, -7.0);
     fill_local(g, expected.u, 1, 0, 1);
     fill_local(g, expected.v, 0, 1, 2);

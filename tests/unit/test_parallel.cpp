@@ -160,7 +160,7 @@ TEST(Parallel, PeriodicKoren) {
 TEST(Parallel, ImplicitDiffusionChannelAndPeriodic) {
     if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
     auto implicit = [](CaseConfig c) {
-        c.implicit_diffusion = true;
+        c.diffusion = DiffusionScheme::implicit_euler;
         return c;
     };
     for (const auto& d : {compare_np(implicit(channel(OutflowKind::zero_stress)), 100, {2, 1}),
