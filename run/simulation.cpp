@@ -260,6 +260,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         t_turbulence += st.seconds_turbulence;
         iterations += st.poisson_iterations;
         diffusion_iterations += st.diffusion_iterations;
+        if (solver.implicit_diffusion()) ++summary.implicit_steps;
         summary.seconds_per_step_min = std::min(summary.seconds_per_step_min, step_seconds);
         summary.seconds_per_step_max = std::max(summary.seconds_per_step_max, step_seconds);
 
@@ -302,7 +303,7 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
         summary.share_forcing = t_forcing / total;
         summary.share_turbulence = t_turbulence / total;
         summary.mean_poisson_iterations = iterations / summary.steps;
-        summary.mean_diffusion_iterations = diffusion_iterations / summary.steps;
+        if (summary.implicit_steps > 0) summary.mean_diffusion_iterations = diffusion_iterations / summary.implicit_steps;
         summary.cell_steps_per_second = static_cast<double>(grid.global_cells()) * summary.steps / total;
     } else {
         summary.seconds_per_step_min = 0.0;
@@ -328,9 +329,9 @@ std::string format_summary(const RunSummary& s, long long cells) {
                       s.mean_poisson_iterations, 100 * s.share_correction, 100 * s.share_turbulence,
                       100 * s.share_output);
         o << buf;
-        if (s.mean_diffusion_iterations > 0.0) {
-            std::snprintf(buf, sizeof buf, "implicit diffusion: %.1f PCG iterations/step (momentum share)\n",
-                          s.mean_diffusion_iterations);
+        if (s.implicit_steps > 0) {
+            std::snprintf(buf, sizeof buf, "implicit diffusion in %ld of %ld steps, %.1f PCG iterations each (in the momentum share)\n",
+                          s.implicit_steps, s.steps, s.mean_diffusion_iterations);
             o << buf;
         }
         std::snprintf(buf, sizeof buf, "speed: %.3g cell-steps per second\n", s.cell_steps_per_second);

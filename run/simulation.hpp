@@ -38,7 +38,8 @@ struct RunSummary {
     double share_poisson = 0.0, share_momentum = 0.0, share_correction = 0.0, share_output = 0.0, share_forcing = 0.0,
            share_turbulence = 0.0;
     double mean_poisson_iterations = 0.0;
-    double mean_diffusion_iterations = 0.0;  // implicit diffusion: PCG iterations of the larger component
+    double mean_diffusion_iterations = 0.0;  // per implicit step: PCG iterations of the larger component
+    long implicit_steps = 0;                  // steps whose diffusion was implicit
     double cell_steps_per_second = 0.0;
     double kinetic_energy = 0.0, max_divergence = 0.0;
     std::filesystem::path last_checkpoint;
