@@ -51,5 +51,7 @@ chute_validation(free_body_start_inside_obstacle FreeBodies.StartInsideAnObstacl
 chute_validation(turbulent_channel Turbulence.ChannelBulkVelocity 2 "validation")
 chute_validation(turbulent_channel_first_cell Turbulence.ChannelIndependentOfTheFirstCell 2 "validation")
 chute_validation(turbulent_channel_friction Turbulence.ChannelFrictionCoefficient 2 "validation;slow")
+chute_validation(free_fall_block_k_epsilon Turbulence.StudyBlockFallsAtTheExperimentsSpeed 2 "validation;slow")
+chute_validation(slope_runout_water_air Turbulence.SlopeRunoutInWaterIsShorterThanInAir 2 "validation;slow")
 chute_validation(square_cylinder_re22000 Turbulence.SquareCylinderRe22000 2 "validation;slow")
 chute_validation(square_cylinder_re22000_empty Turbulence.SquareCylinderDomainWithoutBodyMakesNoTurbulence 2 "validation")
