@@ -604,6 +604,14 @@ std::vector<CaseKey> make_schema() {
          .min = at_least(0.0),
          .meaning = "Production limiter P_k <= limit * eps (Menter 1994), which stops k piling up at "
                     "stagnation points; 0 switches it off."},
+        {.path = "turbulence.production",
+         .type = K::choice,
+         .default_value = "standard",
+         .choices = {"standard", "kato_launder"},
+         .meaning = "Production of k: `standard` P_k = nu_t S^2, or `kato_launder` P_k = nu_t S Omega (Kato & "
+                    "Launder 1993; S and Omega the strain and rotation rates), which is zero in irrotational "
+                    "strain and so removes the standard model's excess of k where the flow meets a bluff "
+                    "body's front face; the same in simple shear."},
         {.path = "turbulence.image_distance",
          .type = K::number,
          .default_value = "2.0",
@@ -966,6 +974,7 @@ class Reader {
         c.turbulence.length_scale = number("turbulence.length_scale");
         c.turbulence.velocity_scale = number("turbulence.velocity_scale");
         c.turbulence.production_limit = number("turbulence.production_limit");
+        c.turbulence.kato_launder = choice("turbulence.production") == "kato_launder";
         c.turbulence.image_distance = number("turbulence.image_distance");
 
         c.initial = to_enum<InitialCondition>(

@@ -87,7 +87,8 @@ void KEpsilon::set_ghosts(Field2D& f, const double* inflow) const {
 }
 
 // P_k = nu_t S^2 with S^2 = 2 (du/dx^2 + dv/dy^2) + (du/dy + dv/dx)^2, the shear strain taken at the four
-// corners of the cell and its square averaged.
+// corners of the cell and its square averaged; with turbulence.production kato_launder, P_k = nu_t S Omega,
+// Omega = |dv/dx - du/dy| (Kato & Launder 1993), the vorticity's square averaged over the corners likewise.
 void KEpsilon::production(Field2D& P) const {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
@@ -95,6 +96,10 @@ void KEpsilon::production(Field2D& P) const {
     auto shear = [&](int a, int b) {
         return (vel.u(a, b) - vel.u(a, b - 1)) / Y.dc(b) + (vel.v(a, b) - vel.v(a - 1, b)) / X.dc(a);
     };
+    auto vorticity = [&](int a, int b) {
+        return (vel.v(a, b) - vel.v(a - 1, b)) / X.dc(a) - (vel.u(a, b) - vel.u(a, b - 1)) / Y.dc(b);
+    };
+    const bool kato_launder = config_.turbulence.kato_launder;
     const double limit = config_.turbulence.production_limit;
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i) {
@@ -103,6 +108,12 @@ void KEpsilon::production(Field2D& P) const {
             const double s00 = shear(i, j), s10 = shear(i + 1, j), s01 = shear(i, j + 1), s11 = shear(i + 1, j + 1);
             const double S2 = 2.0 * (dudx * dudx + dvdy * dvdy) + 0.25 * (s00 * s00 + s10 * s10 + s01 * s01 + s11 * s11);
             double p = model_nu_t_(i, j) * S2;
+            if (kato_launder) {
+                const double w00 = vorticity(i, j), w10 = vorticity(i + 1, j), w01 = vorticity(i, j + 1),
+                             w11 = vorticity(i + 1, j + 1);
+                const double W2 = 0.25 * (w00 * w00 + w10 * w10 + w01 * w01 + w11 * w11);
+                p = model_nu_t_(i, j) * std::sqrt(S2 * W2);
+            }
             if (limit > 0.0) p = std::min(p, limit * eps_(i, j));
             P(i, j) = p;
         }

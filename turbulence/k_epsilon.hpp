@@ -38,6 +38,8 @@ public:
     void update(double dt);
     // After k and eps were read from a checkpoint.
     void restored();
+    // P_k of the current velocity and nu_t on owned cells (before the wall cells' log-law values).
+    void production(Field2D& P) const;
     // Sub-steps of the last update (1 unless dt exceeded the explicit diffusion limit of k and eps).
     int last_substeps() const { return last_substeps_; }
     // Empty, or what went wrong (non-finite k or eps, nu_t beyond 1e8 nu): collective.
@@ -60,7 +62,6 @@ private:
     // Halo exchange, then the domain sides: `inflow` on inflow sides (null: zero gradient there too), zero
     // gradient on the others; periodic sides by the exchange.
     void set_ghosts(Field2D& f, const double* inflow) const;
-    void production(Field2D& P) const;
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
     void refresh_eddy_viscosity();
     int substeps_for(double dt) const;

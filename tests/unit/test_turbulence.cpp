@@ -147,3 +147,43 @@ time: {end: 1.0}
     KEpsilon model(c, s, none);
     EXPECT_NEAR(model.inflow_k(), 1.5 * std::pow(0.05 * 2.0, 2), 1e-15);
 }
+
+// Kato & Launder (1993): P_k = nu_t S Omega. In irrotational plane strain (u = a x, v = -a y) it vanishes
+// where the standard nu_t S^2 = 4 a^2 nu_t does not (the stagnation-point excess of k); in simple shear
+// (u = g y) both give nu_t g^2.
+TEST(KEpsilon, KatoLaunderProductionVanishesInPureStrain) {
+    for (bool kl : {false, true}) {
+        CaseConfig c;
+        c.x = AxisConfig{-1.0, 1.0, 16, "uniform", 2.0, 1.05, {}};
+        c.y = AxisConfig{-1.0, 1.0, 16, "tanh", 1.5, 1.05, {}};
+        for (auto& b : c.boundary) b.type = BoundaryType::slip;
+        c.turbulence.model = TurbulenceModelType::k_epsilon;
+        c.turbulence.velocity_scale = 1.0;
+        c.turbulence.production_limit = 0.0;
+        c.turbulence.kato_launder = kl;
+        FlowSolver s(c, MPI_COMM_WORLD);
+        ImmersedBoundary none(s.grid(), c);
+        KEpsilon model(c, s, none);
+        const Grid& g = s.grid();
+        const double nu_t = model.eddy_viscosity()(3, 3), a = 0.7, shear_rate = 1.3;
+        Field2D P(g);
+        double strain_err = 0.0, shear_err = 0.0;
+        for (int flow = 0; flow < 2; ++flow) {
+            Velocity& vel = s.velocity();
+            for (int j = -kGhost; j < g.ny() + kGhost; ++j)
+                for (int i = -kGhost; i < g.nx() + kGhost; ++i) {
+                    vel.u(i, j) = flow == 0 ? a * g.lx().f(i) : shear_rate * g.ly().c(j);
+                    vel.v(i, j) = flow == 0 ? -a * g.ly().f(j) : 0.0;
+                }
+            model.production(P);
+            const double expected = flow == 0 ? (kl ? 0.0 : 4.0 * a * a * nu_t) : nu_t * shear_rate * shear_rate;
+            double& err = flow == 0 ? strain_err : shear_err;
+            for (int j = 0; j < g.ny(); ++j)
+                for (int i = 0; i < g.nx(); ++i) err = std::max(err, std::abs(P(i, j) - expected));
+        }
+        std::printf("%s production: pure strain error %.2e, simple shear error %.2e (of nu_t g^2 = %.3e)\n",
+                    kl ? "Kato-Launder" : "standard", strain_err, shear_err, nu_t * shear_rate * shear_rate);
+        EXPECT_LT(strain_err, 1e-12 * nu_t);
+        EXPECT_LT(shear_err, 1e-12 * nu_t);
+    }
+}
