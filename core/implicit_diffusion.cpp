@@ -35,7 +35,6 @@ ImplicitDiffusion::~ImplicitDiffusion() {
 // The unknowns of one component are its owned faces minus boundary faces: u faces [u_first, nx) x [0, ny),
 // v faces [0, nx) x [v_first, ny). In a periodic direction every face is an unknown.
 void ImplicitDiffusion::create(Component& c, bool is_u) {
-    c.is_u = is_u;
     const int ox = grid_.lx().offset, oy = grid_.ly().offset;
     c.first = is_u ? bc_.u_first() : bc_.v_first();
     c.lower = {ox + (is_u ? c.first : 0), oy + (is_u ? 0 : c.first)};

@@ -41,7 +41,6 @@ public:
 
 private:
     struct Component {
-        bool is_u = true;
         std::array<int, 2> lower{}, upper{};  // owned unknown faces, global indices
         int first = 0;                        // first local face index along the component's direction
         int cells = 0;
