@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-case_file=${1:-examples/lid_driven_cavity/re100.yaml}
+case_file=${1:-examples/free_fall_block/case.yaml}
 shift || true
-ranks=${CHUTE_RANKS:-1}
+ranks=${CHUTE_RANKS:-$(( $(nproc) > 1 ? 2 : 1 ))}
 mpirun --allow-run-as-root --oversubscribe -np "$ranks" build/apps/chute run "$case_file" "$@"
