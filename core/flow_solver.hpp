@@ -104,6 +104,7 @@ private:
     std::unique_ptr<PoissonSolver> poisson_;
     std::unique_ptr<ImplicitDiffusion> implicit_;  // made at the first implicit step
     bool implicit_now_ = false;  // the scheme of the last step (numerics.diffusion auto switches)
+    double inverse_h2_max_ = 0.0;  // max of 1/dx^2 + 1/dy^2 over the grid (diffusion limit)
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
     StepStats pending_;  // the predict() half of the step being taken

@@ -100,10 +100,15 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
     const bool wall_high_a = grid_.touches(high_a) && !periodic_a;
     const int mirror_low_b = ghost_mirror(grid_, bc_, low_b), mirror_high_b = ghost_mirror(grid_, bc_, high_b);
 
+    // Position of face (a, b) in hypre's box order, x fastest: along the component for u, across it for v.
     const int count_a = na - c.first;
-    std::size_t k = 0;
+    auto box_index = [&](int a, int b) {
+        return is_u ? static_cast<std::size_t>(b) * count_a + (a - c.first)
+                    : static_cast<std::size_t>(a - c.first) * nb + b;
+    };
     for (int b = 0; b < nb; ++b)
-        for (int a = c.first; a < na; ++a, ++k) {
+        for (int a = c.first; a < na; ++a) {
+            const std::size_t k = box_index(a, b);
             const double volume = A.dc(a) * B.w(b);
             // Coefficients dt * flux area * nu_e / distance of the four neighbours.
             const double aw = dt * 2.0 * cell(a - 1, b) * B.w(b) / A.w(a - 1);
@@ -137,20 +142,6 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
             }
             c.solution[k] = 0.0;
         }
-    // hypre's boxes run x fastest; for v the loop above ran y (along) fastest: transpose.
-    if constexpr (!is_u) {
-        auto transpose = [&](std::vector<double>& data, int width) {
-            std::vector<double> out(data.size());
-            for (int b = 0; b < nb; ++b)
-                for (int a = 0; a < count_a; ++a)
-                    for (int q = 0; q < width; ++q)
-                        out[(static_cast<std::size_t>(a) * nb + b) * width + q] =
-                            data[(static_cast<std::size_t>(b) * count_a + a) * width + q];
-            data.swap(out);
-        };
-        transpose(c.values, 5);
-        transpose(c.rhs, 1);
-    }
     int entries[5] = {0, 1, 2, 3, 4};
     HYPRE_StructMatrixSetBoxValues(c.matrix, c.lower.data(), c.upper.data(), 5, entries, c.values.data());
     HYPRE_StructMatrixAssemble(c.matrix);

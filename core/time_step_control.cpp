@@ -8,6 +8,17 @@
 
 namespace chute {
 
+double max_inverse_square_spacing(const Grid& grid) {
+    double m = 0.0;
+    for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 0; i < grid.nx(); ++i) {
+            const double ix = 1.0 / grid.lx().w(i), iy = 1.0 / grid.ly().w(j);
+            m = std::max(m, ix * ix + iy * iy);
+        }
+    MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
+    return m;
+}
+
 TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
                                 double diffusion_number) {
     const auto& X = grid.lx();

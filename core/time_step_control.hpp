@@ -13,6 +13,9 @@ struct TimeStepLimits {
     double stable() const { return convective < diffusive ? convective : diffusive; }
 };
 
+// Global (all ranks) max of 1/dx^2 + 1/dy^2: the diffusion limit is diffusion_number / (nu times it).
+double max_inverse_square_spacing(const Grid& grid);
+
 // Global (all ranks) limits for the current velocity.
 TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
                                 double diffusion_number);
