@@ -1,6 +1,6 @@
-// bench_free_fall: cost of one time step with a free body, split into the flow, the body (forcing, rigid-body
-// update, contact), the turbulence model (when the case runs k-epsilon) and the force measures written to
-// the time series.
+// bench_free_fall: cost of one time step with a free body, split by the stages of the step (run/step.hpp):
+// the flow (momentum, Poisson, correction), the bodies (carrier forcing, rigid-body update, contact), the
+// turbulence model (when the case runs k-epsilon) and the force measures written to the time series.
 //
 //   mpirun -np R bench_free_fall [--steps N] [--warmup N] [case.yaml]
 //
@@ -14,10 +14,9 @@
 #include <cstdlib>
 #include <string>
 
-#include <memory>
-
 #include "case_file.hpp"
-#include "coupled_step.hpp"
+#include "model.hpp"
+#include "step.hpp"
 
 using namespace chute;
 
@@ -25,42 +24,32 @@ namespace {
 
 void run(const std::string& path, int steps, int warmup, int rank, int size) {
     const CaseConfig c = load_case(path, {"time.end=100.0"});
-    FlowSolver flow(c, MPI_COMM_WORLD);
-    ImmersedBoundary ibm(flow.grid(), c);
-    FreeBodies free(c, ibm);
-    std::unique_ptr<KEpsilon> turbulence;
-    if (c.turbulence.model == TurbulenceModelType::k_epsilon) turbulence = std::make_unique<KEpsilon>(c, flow, ibm);
+    Model model(c, MPI_COMM_WORLD);
+    StageTimer stages;
     using clock = std::chrono::steady_clock;
-    double total = 0, momentum = 0, poisson = 0, correction = 0, bodies = 0, forces = 0, turb = 0;
+    double total = 0;
     for (int n = 0; n < warmup + steps; ++n) {
+        if (n == warmup) stages.reset();
         MPI_Barrier(MPI_COMM_WORLD);
         const auto t0 = clock::now();
-        const StepStats st = advance(flow, ibm, free, 0.0, turbulence.get());
-        const auto t1 = clock::now();
-        std::vector<BodyForces> f = ibm.forces(flow.velocity(), flow.pressure(), turbulence ? &turbulence->k() : nullptr);
-        free.report(f);
+        advance(model, model.stable_dt(), &stages);
+        measure_forces(model, &stages);
         MPI_Barrier(MPI_COMM_WORLD);
-        const auto t2 = clock::now();
-        if (n < warmup) continue;
-        total += std::chrono::duration<double>(t2 - t0).count();
-        forces += std::chrono::duration<double>(t2 - t1).count();
-        momentum += st.seconds_momentum;
-        poisson += st.seconds_poisson;
-        correction += st.seconds_correction;
-        bodies += st.seconds_forcing;
-        turb += st.seconds_turbulence;
+        if (n >= warmup) total += std::chrono::duration<double>(clock::now() - t0).count();
     }
     if (rank == 0) {
         const double per = 1e3 / steps;
         std::printf("case %s, %d x %d cells, %d rank(s), %d steps timed after %d (t = %.3f s, block speed %.3f m/s)\n\n",
-                    path.c_str(), c.x.cells, c.y.cells, size, steps, warmup, flow.time(),
-                    ibm.bodies()[0].state().velocity.norm());
-        std::printf("| ms / step | momentum | Poisson | correction | body: forcing, update, contact | turbulence | force measures (a), (b) |\n");
-        std::printf("|---|---|---|---|---|---|---|\n");
-        std::printf("| %.2f | %.2f (%.0f %%) | %.2f (%.0f %%) | %.2f (%.0f %%) | %.2f (%.1f %%) | %.2f (%.1f %%) | %.2f (%.1f %%) |\n",
-                    total * per, momentum * per, 100 * momentum / total, poisson * per, 100 * poisson / total,
-                    correction * per, 100 * correction / total, bodies * per, 100 * bodies / total, turb * per,
-                    100 * turb / total, forces * per, 100 * forces / total);
+                    path.c_str(), c.x.cells, c.y.cells, size, steps, warmup, model.flow().time(),
+                    model.bodies()[0].state().velocity.norm());
+        std::printf("| ms / step |");
+        for (const auto& [stage, seconds] : stages.stages()) std::printf(" %s |", stage.c_str());
+        std::printf("\n|---|");
+        for (std::size_t k = 0; k < stages.stages().size(); ++k) std::printf("---|");
+        std::printf("\n| %.2f |", total * per);
+        for (const auto& [stage, seconds] : stages.stages())
+            std::printf(" %.2f (%.1f %%) |", seconds * per, 100 * seconds / total);
+        std::printf("\n");
     }
 }
 

@@ -279,6 +279,8 @@ int main(int argc, char** argv) {
         row.steps = count;
         row.min_step = INFINITY;
         double ke = 0, div = 0;
+        StageTimer stages;
+        s.set_timer(&stages);
         MPI_Barrier(MPI_COMM_WORLD);
         for (long k = 0; k < count; ++k) {
             t0 = Clock::now();
@@ -290,11 +292,12 @@ int main(int argc, char** argv) {
             row.sec_diagnostics += since(t1);
             row.seconds += t_step;
             row.min_step = std::min(row.min_step, t_step);
-            row.sec_momentum += st.seconds_momentum;
-            row.sec_poisson += st.seconds_poisson;
-            row.sec_correction += st.seconds_correction;
             row.iterations += st.poisson_iterations;
         }
+        s.set_timer(nullptr);
+        row.sec_momentum = stages.seconds("momentum");
+        row.sec_poisson = stages.seconds("poisson");
+        row.sec_correction = stages.seconds("correction");
         if (!std::isfinite(ke) || !std::isfinite(div)) {
             if (root) std::fprintf(stderr, "bench_step: the %d^2 run diverged\n", n);
             MPI_Abort(MPI_COMM_WORLD, 3);

@@ -1,8 +1,10 @@
 #pragma once
 // A static obstacle a body can hit: a plane with the solid on one side (the sea bed, a slope, a domain wall).
 #include <string>
+#include <vector>
 
 #include "body.hpp"
+#include "case_config.hpp"
 
 namespace chute {
 
@@ -19,5 +21,9 @@ struct Gap {
 };
 
 Gap gap(const Outline& outline, const BodyState& s, const Obstacle& obstacle);
+
+// The static planes of a case a body can hit: its `plane` bodies and the domain sides of type wall or slip,
+// each moved out by contact.distance.
+std::vector<Obstacle> obstacles_of(const CaseConfig& config);
 
 }  // namespace chute

@@ -1,6 +1,5 @@
 #include "flow_solver.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -11,11 +10,6 @@
 #include "time_step_control.hpp"
 
 namespace chute {
-
-namespace {
-using clock = std::chrono::steady_clock;
-double seconds_since(clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); }
-}  // namespace
 
 Axis build_axis(const AxisConfig& c, bool periodic) {
     if (c.spacing == "lines") return Axis(c.lines, periodic);
@@ -190,7 +184,7 @@ double FlowSolver::predict(double dt) {
 
     // Momentum prediction (AB2 with the last pressure gradient), then the boundary faces of u*
     // (prescribed, convective or zero-stress).
-    auto t0 = clock::now();
+    StageTimer::Scope timed(timer_, "momentum");
     explicit_rhs(vel_, rhs_);
     predict_velocity(dt, r);
     bc_->set_outflow(vel_, star_, dt);
@@ -202,7 +196,6 @@ double FlowSolver::predict(double dt) {
         bc_->set_outflow(vel_, star_, dt);  // a zero-stress outflow face copies the corrected interior
     }
     pressure_increment_guess(r);
-    pending_.seconds_momentum = seconds_since(t0);
     return dt;
 }
 
@@ -210,16 +203,17 @@ StepStats FlowSolver::project() {
     StepStats stats = pending_;
     const double dt = stats.dt;
     // 1. Pressure-increment Poisson equation laplacian(phi) = div(u*) / dt.
-    auto t0 = clock::now();
-    halo_->exchange(star_);
-    divergence(*grid_, star_, 1.0 / dt, source_);
-    const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(dt));
-    stats.poisson_iterations = ps.iterations;
-    stats.poisson_residual = ps.relative_residual;
-    stats.seconds_poisson = seconds_since(t0);
+    {
+        StageTimer::Scope timed(timer_, "poisson");
+        halo_->exchange(star_);
+        divergence(*grid_, star_, 1.0 / dt, source_);
+        const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(dt));
+        stats.poisson_iterations = ps.iterations;
+        stats.poisson_residual = ps.relative_residual;
+    }
 
     // 2. Projection onto divergence-free fields: u = u* - dt grad phi, p^{n+1/2} = p^{n-1/2} + phi.
-    t0 = clock::now();
+    StageTimer::Scope timed(timer_, "correction");
     halo_->exchange(phi_);
     bc_->apply_pressure(phi_);
     subtract_pressure_gradient(*grid_, *bc_, phi_, dt, star_);
@@ -231,7 +225,6 @@ StepStats FlowSolver::project() {
     std::swap(rhs_, rhs_old_);
     halo_->exchange(vel_);
     bc_->apply(vel_);
-    stats.seconds_correction = seconds_since(t0);
 
     time_ += dt;
     dt_previous_ = dt;

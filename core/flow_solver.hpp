@@ -26,6 +26,7 @@
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"
 #include "poisson_solver.hpp"
+#include "stage_timer.hpp"
 #include "viscous_stress.hpp"
 
 namespace chute {
@@ -35,11 +36,6 @@ struct StepStats {
     int poisson_iterations = 0;
     int diffusion_iterations = 0;    // implicit diffusion: PCG iterations of the larger component
     double poisson_residual = 0.0;
-    double seconds_momentum = 0.0;   // prediction incl. boundary conditions
-    double seconds_poisson = 0.0;    // right-hand side, hypre solve
-    double seconds_correction = 0.0; // gradient correction, halo exchange
-    double seconds_forcing = 0.0;    // immersed-boundary forcing between predict() and project()
-    double seconds_turbulence = 0.0; // turbulence model update after the step (turbulence/)
 };
 
 class FlowSolver {
@@ -88,6 +84,9 @@ public:
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
+    // Time the stages of a step into `timer` (null: no timing): "momentum" (prediction with its boundary
+    // conditions), "poisson" (right-hand side and hypre solve), "correction" (gradient, halo exchange).
+    void set_timer(StageTimer* timer) { timer_ = timer; }
 
 private:
     void explicit_rhs(const Velocity& vel, Velocity& rhs) const;      // H = -C(u) + nu L(u)
@@ -113,6 +112,7 @@ private:
     bool pressure_history_ = false;  // p_old_ holds p^{n-1} (false on the first step and after a grid change)
     double time_ = 0.0, dt_previous_ = 0.0;
     long step_ = 0;
+    StageTimer* timer_ = nullptr;
 };
 
 Axis build_axis(const AxisConfig& c, bool periodic);

@@ -1,40 +1,57 @@
 #include "immersed_boundary.hpp"
 
-#include <stdexcept>
-
 namespace chute {
 
-ImmersedBoundary::ImmersedBoundary(const Grid& grid, const CaseConfig& config) : grid_(grid), config_(config) {
-    const Vec2 lo(config.x.start, config.y.start), hi(config.x.end, config.y.end);
-    bodies_.reserve(config.bodies.size());
-    for (const BodyConfig& b : config.bodies) {
-        try {
-            bodies_.emplace_back(b, lo, hi);
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("bodies." + b.name + ": " + e.what());
-        }
-    }
-    forcing_ = std::make_unique<DirectForcing>(grid, config.ibm, bodies_);
-    for (std::size_t b = 0; b < bodies_.size(); ++b)
-        stress_.push_back(std::make_unique<SurfaceStress>(grid, config.ibm, bodies_[b], forcing_->marker_spacing(b)));
+ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
+    return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
 }
 
-void ImmersedBoundary::move_to(double t) {
+ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings,
+                                   std::vector<Body>& bodies)
+    : grid_(grid), settings_(settings), bodies_(bodies), walls_(grid, bodies, settings.image_distance),
+      start_momentum_(bodies.size()), wrench_(bodies.size()) {
+    forcing_ = std::make_unique<DirectForcing>(grid, settings.ibm, bodies_);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        stress_.push_back(std::make_unique<SurfaceStress>(grid, settings.ibm, bodies_[b], forcing_->marker_spacing(b)));
+}
+
+void ImmersedBoundary::begin_step(const Velocity& start) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
+}
+
+void ImmersedBoundary::place(double t) {
     for (Body& b : bodies_) b.move_to(t);
 }
 
-std::vector<BodyForces> ImmersedBoundary::forces(const Velocity& vel, const Field2D& p, const Field2D* k) const {
+Wrench ImmersedBoundary::hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) {
+    const double rho = settings_.density, depth = settings_.depth;
+    const BodyForcing& forcing = forcing_->forcing()[b];
+    const EnclosedMomentum P = enclosed_momentum(grid_, vel, bodies_[b]);  // at the predicted place
+    const EnclosedMomentum& P0 = start_momentum_[b];
+    wrench_[b].force = rho * depth * (-forcing.momentum_rate + (P.linear - P0.linear) / dt);
+    wrench_[b].torque = rho * depth * (-forcing.torque_rate + (P.angular - P0.angular) / dt);
+    return wrench_[b];
+}
+
+std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Field2D& p,
+                                                  const WallTurbulence* turbulence) {
     std::vector<BodyForces> out(bodies_.size());
-    const double rho = config_.density, depth = config_.depth;
+    const double rho = settings_.density, depth = settings_.depth;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const BodyForcing& f = forcing_->forcing()[b];
         BodyForces& r = out[b];
-        r.forcing = rho * depth * (-f.momentum_rate + body.area() * body.state().acceleration);
-        r.forcing_torque = rho * depth * (-f.torque_rate + body.polar_moment() * body.state().angular_acceleration);
+        if (body.free()) {
+            r.forcing = wrench_[b].force;
+            r.forcing_torque = wrench_[b].torque;
+        } else {
+            r.forcing = rho * depth * (-f.momentum_rate + body.area() * body.state().acceleration);
+            r.forcing_torque = rho * depth * (-f.torque_rate + body.polar_moment() * body.state().angular_acceleration);
+        }
         r.max_slip = f.max_slip;
         r.rms_slip = f.rms_slip;
-        r.surface = stress_[b]->compute(vel, p, rho, config_.viscosity, depth, k);
+        r.surface = stress_[b]->compute(vel, p, rho, settings_.viscosity, depth, turbulence);
     }
     return out;
 }

@@ -1,56 +1,76 @@
 #pragma once
-// The immersed bodies of a run and what the time step asks of them:
+// Carrier 1 (body/carrier.hpp): the bodies imposed on a fixed Cartesian grid by direct forcing on Lagrangian
+// markers. What the step asks of it:
 //
-//   move_to(t^{n+1})                 prescribed motion (free bodies: rigidbody/fluid_body_coupling)
-//   force(u*, dt)                    direct forcing of the predicted velocity (direct_forcing)
+//   begin_step(u^n)                  the fluid momentum P^n inside each free body (enclosed_momentum)
+//   place(t^{n+1})                   prescribed motion (free bodies are placed by rigidbody/free_bodies)
+//   impose(u*, dt)                   direct forcing of the predicted velocity (direct_forcing)
 //   (projection)
-//   forces(u^{n+1}, p^{n+1/2})       hydrodynamic force and torque on each body, two independent ways:
-//     (a) from the forcing (Uhlmann 2005, eq. 23 and 28, rigid-body form of the internal fluid term):
+//   hydrodynamic_wrench(b, u^{n+1})  on a free body at its predicted place (Uhlmann 2005 eq. 23, the internal
+//                                    fluid's momentum from the grid, Kempe & Froehlich 2012):
+//                                      F = rho depth ( -sum_l F_l dV_l + (P^{n+1} - P^n) / dt )
+//   measure(u^{n+1}, p^{n+1/2})      the hydrodynamic force and torque on each body, two independent ways:
+//     (a) from the forcing: for a free body the wrench above; for a fixed or prescribed one the rigid-body
+//         form of the internal fluid term (Uhlmann 2005, eq. 23 and 28),
 //           F = rho depth ( -sum_l F_l dV_l + A dU_c/dt ),   M = rho depth ( -sum_l r_l x F_l dV_l + J domega/dt )
 //         A the area and J the polar moment of area of the body: the fluid inside the outline moves with it;
 //     (b) from the stress on the surface, split into pressure, viscous and turbulent parts (surface_stress).
 // Both refer to the step's mid-point in time: the forcing acts over the step and the pressure is p^{n+1/2}.
+// The walls a turbulence model sees are the cells beside the outlines (immersed_wall).
 #include <memory>
 #include <vector>
 
-#include "body.hpp"
+#include "carrier.hpp"
+#include "case_config.hpp"
 #include "direct_forcing.hpp"
-#include "flow_solver.hpp"
+#include "enclosed_momentum.hpp"
+#include "immersed_wall.hpp"
 #include "surface_stress.hpp"
 
 namespace chute {
 
-struct BodyForces {
-    Vec2 forcing = Vec2::Zero();   // (a), N
-    double forcing_torque = 0.0;   // (a), N m
-    SurfaceForces surface;         // (b), N and N m
-    double max_slip = 0.0, rms_slip = 0.0;  // m/s after the forcing iterations
-    // Free bodies only (rigidbody/fluid_body_coupling), N and N m; zero for fixed and prescribed bodies.
-    Vec2 gravity = Vec2::Zero(), buoyancy = Vec2::Zero(), contact = Vec2::Zero();
-    double contact_torque = 0.0;
+// What the immersed boundary needs of a case.
+struct ImmersedBoundarySettings {
+    IbmConfig ibm;
+    double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
+    double image_distance = 2.0;  // cells: where wall functions sample the flow (turbulence.image_distance)
 };
+ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& config);
 
-class ImmersedBoundary {
+class ImmersedBoundary final : public Carrier {
 public:
-    ImmersedBoundary(const Grid& grid, const CaseConfig& config);
+    // `bodies` are the run's; they outlive the carrier.
+    ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings, std::vector<Body>& bodies);
 
-    bool empty() const { return bodies_.empty(); }
-    const Grid& grid() const { return grid_; }
-    const std::vector<Body>& bodies() const { return bodies_; }
-    Body& body(std::size_t b) { return bodies_[b]; }  // free bodies are moved from outside (rigidbody/)
-    void move_to(double t);
-    void force(Velocity& star, double dt) { forcing_->apply(star, dt); }
-    // k: the turbulence energy when a k-epsilon model runs (adds the turbulent part of the surface stress).
-    std::vector<BodyForces> forces(const Velocity& vel, const Field2D& p, const Field2D* k = nullptr) const;
+    const std::vector<Body>& bodies() const override { return bodies_; }
+    double cell_size(std::size_t b) const override { return forcing_->cell_size(b); }
+
+    void begin_step(const Velocity& start) override;
+    void place(double t) override;
+    void impose(Velocity& predicted, double dt) override {
+        if (!bodies_.empty()) forcing_->apply(predicted, dt);
+    }
+    Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
+    std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
+
+    void locate_walls() override { walls_.locate(); }
+    const Field2D& fluid_cells() const override { return walls_.fluid(); }
+    std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const override {
+        return walls_.sample(vel, k);
+    }
+
     const DirectForcing& forcing() const { return *forcing_; }
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 
 private:
     const Grid& grid_;
-    const CaseConfig& config_;
-    std::vector<Body> bodies_;
+    ImmersedBoundarySettings settings_;
+    std::vector<Body>& bodies_;
     std::unique_ptr<DirectForcing> forcing_;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
+    ImmersedWall walls_;
+    std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
+    std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
 };
 
 }  // namespace chute

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "wall_function.hpp"
-
 namespace chute {
 
 SurfaceStress::SurfaceStress(const Grid& grid, const IbmConfig& config, const Body& body, double marker_spacing)
@@ -34,8 +32,9 @@ void SurfaceStress::place() {
 }
 
 SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, double density, double viscosity,
-                                     double depth, const Field2D* k) {
+                                     double depth, const WallTurbulence* turbulence) {
     if (!placed_ || body_.moves()) place();
+    const Field2D* k = turbulence ? &turbulence->k : nullptr;
     const std::vector<double> P1 = interpolate(grid_, p1_, p), P2 = interpolate(grid_, p2_, p);
     const std::vector<double> K2 = k ? interpolate(grid_, p2_, *k) : std::vector<double>(markers_.size(), 0.0);
     const std::vector<Vec2> U1 = interpolate_velocity(grid_, u1_, v1_, vel);
@@ -61,7 +60,7 @@ SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, doub
         f.pressure_torque += cross(r, fp);
         f.viscous_torque += cross(r, fv);
         if (k) {
-            const double nu_wall = WallFunction(K2[l], d2 * h, viscosity).nu_wall;
+            const double nu_wall = turbulence->wall_viscosity(K2[l], d2 * h);
             const Vec2 ft = density * (nu_wall * dwdn * t - 2.0 / 3.0 * K2[l] * n) * ds;
             f.turbulent += ft;
             f.turbulent_torque += cross(r, ft);

@@ -13,31 +13,26 @@
 // (at a rigid no-slip wall the viscous traction is rho nu dw/dn, and its normal part vanishes by continuity).
 // With a k-epsilon model (k given) the Reynolds stress adds the turbulent part, as Turmel & Locat's eq. 14-15
 // take it from OpenFOAM's R = 2/3 k I - nu_t (grad u + grad u^T) at the wall face:
-//   turbulent  rho nu_w (dw/dn) t_l - 2/3 rho k_l n_l,   nu_w the wall-function eddy viscosity
-//              (core/wall_function.hpp) from k_l at the outer probe, y = d_2 h
+//   turbulent  rho nu_w (dw/dn) t_l - 2/3 rho k_l n_l,   nu_w the wall eddy viscosity of the model's wall
+//              law (turbulence/wall_function.hpp, through WallTurbulence) from k_l at the outer probe, y = d_2 h
 //   pressure   the solver's p carries 2/3 k (viscous_stress.hpp), so p_l - 2/3 k_l is reported
 // The sum of the three is the same with or without the split.
 #include <array>
 #include <vector>
 
 #include "body.hpp"
+#include "body_forces.hpp"
+#include "carrier.hpp"
 #include "euler_lagrange.hpp"
 
 namespace chute {
 
-struct SurfaceForces {
-    Vec2 pressure = Vec2::Zero(), viscous = Vec2::Zero(), turbulent = Vec2::Zero();  // N (per body: times depth)
-    double pressure_torque = 0.0, viscous_torque = 0.0, turbulent_torque = 0.0;      // N m
-    Vec2 total() const { return pressure + viscous + turbulent; }
-    double total_torque() const { return pressure_torque + viscous_torque + turbulent_torque; }
-};
-
 class SurfaceStress {
 public:
     SurfaceStress(const Grid& grid, const IbmConfig& config, const Body& body, double marker_spacing);
-    // p is the kinematic pressure (p / rho), as FlowSolver holds it; k the turbulence energy (or null).
+    // p is the kinematic pressure (p / rho), as FlowSolver holds it; turbulence: k and the wall law (or null).
     SurfaceForces compute(const Velocity& vel, const Field2D& p, double density, double viscosity, double depth,
-                          const Field2D* k = nullptr);
+                          const WallTurbulence* turbulence = nullptr);
     // From the last compute(): the surface points (world frame) and the pressure extrapolated to them (Pa).
     const std::vector<Vec2>& points() const { return world_; }
     const std::vector<double>& wall_pressure() const { return wall_pressure_; }

@@ -13,23 +13,24 @@ std::vector<std::string> BodySeries::columns() {
             "fx_contact",  "fy_contact", "m_contact",  "fx_total",   "fy_total",   "m_total"};
 }
 
-BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const ImmersedBoundary& ibm,
+BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const Carrier& carrier,
                        const CaseConfig& config, double restart_time)
-    : ibm_(ibm), config_(config) {
-    for (const Body& b : ibm.bodies())
+    : bodies_(carrier.bodies()), density_(config.density), depth_(config.depth) {
+    for (const Body& b : bodies_)
         series_.push_back(std::make_unique<TimeSeries>(grid, out_dir, columns(), restart_time, "body_" + b.name()));
 }
 
 void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
     for (std::size_t k = 0; k < series_.size(); ++k) {
-        const Body& body = ibm_.bodies()[k];
+        const Body& body = bodies_[k];
         const BodyState& s = body.state();
         const BodyForces& f = forces[k];
         const SurfaceForces& sf = f.surface;
         const Vec2 surface = sf.total();
-        const Vec2 total = f.forcing + f.gravity + f.buoyancy + f.contact;
+        const Vec2 total = f.total();
+        const BodyLoads& loads = f.loads;
         const double U = body.config().reference_velocity, L = body.config().reference_length;
-        const double q = 0.5 * config_.density * U * U * L * config_.depth;  // force scale, N
+        const double q = 0.5 * density_ * U * U * L * depth_;  // force scale, N
         series_[k]->append({t,
                             s.centre.x(),
                             s.centre.y(),
@@ -67,16 +68,16 @@ void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
                             surface.y() / q,
                             f.max_slip,
                             f.rms_slip,
-                            f.gravity.x(),
-                            f.gravity.y(),
-                            f.buoyancy.x(),
-                            f.buoyancy.y(),
-                            f.contact.x(),
-                            f.contact.y(),
-                            f.contact_torque,
+                            loads.gravity.x(),
+                            loads.gravity.y(),
+                            loads.buoyancy.x(),
+                            loads.buoyancy.y(),
+                            loads.contact.x(),
+                            loads.contact.y(),
+                            loads.contact_torque,
                             total.x(),
                             total.y(),
-                            f.forcing_torque + f.contact_torque});
+                            f.total_torque()});
     }
 }
 

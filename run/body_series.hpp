@@ -13,18 +13,19 @@
 //   max_slip, rms_slip                                               no-slip error at the markers (m/s)
 //   fx_gravity, fy_gravity, fx_buoyancy, fy_buoyancy,               free bodies (zero otherwise): gravity,
 //   fx_contact, fy_contact, m_contact, fx_total, fy_total, m_total  buoyancy, contact (impulses / dt), total
-// For a free body (a) is the hydrodynamic force of the coupling (rigidbody/fluid_body_coupling.hpp).
+// For a free body (a) is the hydrodynamic force that moved it (body/body_forces.hpp).
 #include <memory>
 #include <vector>
 
-#include "immersed_boundary.hpp"
+#include "carrier.hpp"
+#include "case_config.hpp"
 #include "timeseries.hpp"
 
 namespace chute {
 
 class BodySeries {
 public:
-    BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const ImmersedBoundary& ibm,
+    BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const Carrier& carrier,
                const CaseConfig& config, double restart_time);
     void append(double t, const std::vector<BodyForces>& forces);
     void write_hdf5();
@@ -32,8 +33,8 @@ public:
     static std::vector<std::string> columns();
 
 private:
-    const ImmersedBoundary& ibm_;
-    const CaseConfig& config_;
+    const std::vector<Body>& bodies_;
+    double density_, depth_;
     std::vector<std::unique_ptr<TimeSeries>> series_;
 };
 

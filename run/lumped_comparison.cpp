@@ -8,11 +8,11 @@
 
 namespace chute {
 
-void write_lumped_comparison(const CaseConfig& config, const ImmersedBoundary& ibm, const FreeBodies& free_bodies,
+void write_lumped_comparison(const CaseConfig& config, const std::vector<Body>& bodies, const FreeBodies& free_bodies,
                              const std::filesystem::path& out_dir) {
     const Vec2 g(config.gravity[0], config.gravity[1]);
     const Vec2 across = g.norm() > 0.0 ? Vec2(perp(g).normalized()) : Vec2(Vec2::UnitX());
-    for (const Body& body : ibm.bodies()) {
+    for (const Body& body : bodies) {
         if (!body.free()) continue;
         const Vec2 d = rotated(across, -body.state().angle);  // body frame
         const double width = (body.outline().support_point(d) - body.outline().support_point(-d)).dot(d);

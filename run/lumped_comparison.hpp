@@ -7,11 +7,11 @@
 // velocity of the fluid.
 #include <filesystem>
 
-#include "fluid_body_coupling.hpp"
+#include "free_bodies.hpp"
 
 namespace chute {
 
-void write_lumped_comparison(const CaseConfig& config, const ImmersedBoundary& ibm, const FreeBodies& free_bodies,
+void write_lumped_comparison(const CaseConfig& config, const std::vector<Body>& bodies, const FreeBodies& free_bodies,
                              const std::filesystem::path& out_dir);
 
 }  // namespace chute

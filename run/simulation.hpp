@@ -1,15 +1,17 @@
 #pragma once
-// A whole run: the time loop around FlowSolver, with its outputs, stop tests and progress report.
+// A whole run: the model built from the case (model.hpp), then the loop (CaNS, incflo):
 //
-//   while t < end:  dt -> advance (predict, project) -> check (NaN, divergence)
-//                   -> time series -> fields, checkpoint at their intervals -> progress line
-//   final fields, checkpoint, time-series HDF5, timing summary
+//   while t < end:  choose dt -> advance one step (step.hpp) -> force measures -> check health
+//                   -> write what is due (run_outputs.hpp) -> stop on a signal -> progress line
+//   final fields, checkpoint, series' HDF5 copies, timing summary
 // Everything written is written atomically, so a run that aborts (divergence, bad input, Ctrl-C) keeps
 // all it wrote before.
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "case_config.hpp"
 #include "flow_solver.hpp"
@@ -35,8 +37,9 @@ struct RunSummary {
     double time = 0.0;          // final simulated time
     double wall_seconds = 0.0;  // time loop only
     double seconds_per_step_mean = 0.0, seconds_per_step_min = 0.0, seconds_per_step_max = 0.0;
-    double share_poisson = 0.0, share_momentum = 0.0, share_correction = 0.0, share_output = 0.0, share_forcing = 0.0,
-           share_turbulence = 0.0;
+    // Wall seconds per stage of the step (step.hpp: momentum, bodies, poisson, correction, turbulence, forces;
+    // the loop's health and outputs), in the order they first ran.
+    std::vector<std::pair<std::string, double>> stage_seconds;
     double mean_poisson_iterations = 0.0;
     double mean_diffusion_iterations = 0.0;  // per implicit step: PCG iterations of the larger component
     long implicit_steps = 0;                  // steps whose diffusion was implicit

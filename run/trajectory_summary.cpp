@@ -6,27 +6,27 @@
 
 namespace chute {
 
-TrajectorySummary::TrajectorySummary(const CaseConfig& config, const ImmersedBoundary& ibm) : ibm_(ibm) {
+TrajectorySummary::TrajectorySummary(const CaseConfig& config, const Carrier& carrier) : bodies_(carrier.bodies()) {
     const Vec2 g(config.gravity[0], config.gravity[1]);
     up_ = g.norm() > 0.0 ? Vec2(-g / g.norm()) : Vec2(Vec2::UnitY());
-    for (std::size_t b = 0; b < ibm.bodies().size(); ++b)
-        if (ibm.bodies()[b].free()) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (bodies_[b].free()) {
             Track t;
             t.index = b;
-            t.name = ibm.bodies()[b].name();
+            t.name = bodies_[b].name();
             tracks_.push_back(t);
         }
 }
 
 void TrajectorySummary::observe(double t, const std::vector<BodyForces>& forces) {
     for (Track& k : tracks_) {
-        const BodyState& s = ibm_.bodies()[k.index].state();
+        const BodyState& s = bodies_[k.index].state();
         if (k.events.empty()) k.speed.emplace_back(t, s.velocity.norm());
         if (k.events.size() == 1)
             k.rebound_height = std::max(k.rebound_height, (s.centre - k.events[0].centre).dot(up_));
         k.last_centre = s.centre;
         k.peak_hydrodynamic = std::max(k.peak_hydrodynamic, forces[k.index].forcing.norm());
-        k.peak_contact = std::max(k.peak_contact, forces[k.index].contact.norm());
+        k.peak_contact = std::max(k.peak_contact, forces[k.index].loads.contact.norm());
     }
 }
 

@@ -5,14 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "immersed_boundary.hpp"
+#include "carrier.hpp"
+#include "case_config.hpp"
 #include "rebound.hpp"
 
 namespace chute {
 
 class TrajectorySummary {
 public:
-    TrajectorySummary(const CaseConfig& config, const ImmersedBoundary& ibm);
+    TrajectorySummary(const CaseConfig& config, const Carrier& carrier);
     void observe(double t, const std::vector<BodyForces>& forces);
     void impacts(const std::vector<ContactEvent>& events);
     std::string text() const;
@@ -27,7 +28,7 @@ private:
         double rebound_height = 0.0;  // highest rise of the centre after the first impact, before the second
         Vec2 last_centre = Vec2::Zero();
     };
-    const ImmersedBoundary& ibm_;
+    const std::vector<Body>& bodies_;
     Vec2 up_;  // against gravity
     std::vector<Track> tracks_;
 };

@@ -15,11 +15,11 @@ namespace {
 
 using C = KEpsilonConstants;
 
-bool is_wall(const CaseConfig& c, Side s) { return c.boundary[static_cast<int>(s)].type == BoundaryType::wall; }
+bool is_wall(const KEpsilonSettings& c, Side s) { return c.boundary[static_cast<int>(s)].type == BoundaryType::wall; }
 
 // The speed that sets the inflow and initial k.
-double velocity_scale(const CaseConfig& c) {
-    if (c.turbulence.velocity_scale > 0.0) return c.turbulence.velocity_scale;
+double velocity_scale(const KEpsilonSettings& c) {
+    if (c.model.velocity_scale > 0.0) return c.model.velocity_scale;
     double u = std::hypot(c.initial_velocity[0], c.initial_velocity[1]);
     for (const BoundaryConfig& b : c.boundary)
         if (b.type == BoundaryType::inflow)
@@ -29,15 +29,20 @@ double velocity_scale(const CaseConfig& c) {
 
 }  // namespace
 
-KEpsilon::KEpsilon(const CaseConfig& config, FlowSolver& flow, const ImmersedBoundary& bodies)
-    : config_(config), flow_(flow), grid_(flow.grid()), immersed_(flow.grid(), bodies, config), halo_(flow.grid()) {
-    const double U = velocity_scale(config);
+KEpsilonSettings k_epsilon_settings(const CaseConfig& c) {
+    return {c.turbulence, c.viscosity, c.diffusion_number, c.boundary, c.initial_velocity};
+}
+
+KEpsilon::KEpsilon(const KEpsilonSettings& settings, FlowSolver& flow, Carrier& carrier)
+    : settings_(settings), flow_(flow), grid_(flow.grid()), carrier_(carrier), halo_(flow.grid()) {
+    const TurbulenceConfig& config = settings_.model;
+    const double U = velocity_scale(settings_);
     if (U <= 0.0)
         throw std::invalid_argument(
             "turbulence.velocity_scale: the case has no inflow and no initial speed, so it must give the speed "
             "that sets the initial k (for a body released in still water, about its fall speed)");
-    k_in_ = 1.5 * std::pow(config.turbulence.intensity * U, 2);
-    eps_in_ = std::pow(C::c_mu, 0.75) * std::pow(k_in_, 1.5) / config.turbulence.length_scale;
+    k_in_ = 1.5 * std::pow(config.intensity * U, 2);
+    eps_in_ = std::pow(C::c_mu, 0.75) * std::pow(k_in_, 1.5) / config.length_scale;
     // Floors far below any physical level: they only keep eps / k and C_mu k^2 / eps defined.
     k_floor_ = 1e-10 * k_in_;
     eps_floor_ = 1e-10 * eps_in_;
@@ -53,12 +58,31 @@ void KEpsilon::set_initial_condition() {
 }
 
 void KEpsilon::restored() {
-    immersed_.locate();
-    was_fluid_ = immersed_.fluid();
+    carrier_.locate_walls();
+    was_fluid_ = carrier_.fluid_cells();
     set_ghosts(k_, &k_in_);
     set_ghosts(eps_, &eps_in_);
-    near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
+    sample_walls();
     refresh_eddy_viscosity();
+}
+
+// The log law at the carrier's samples beside the bodies (y = the sample's distance from the surface):
+//   nu_w   the wall eddy viscosity; the band cells get nu_t >= nu_w, so the momentum flux through the band,
+//          (nu + nu_w) U_t / y, is the log-law wall shear
+//   tau_w  the wall shear, which sets the production of k in the wall-function cells
+void KEpsilon::sample_walls() {
+    const double nu = settings_.viscosity;
+    near_wall_.clear();
+    for (const WallSample& s : carrier_.sample_walls(flow_.velocity(), k_)) {
+        const WallFunction wf(s.k, s.image_distance, nu);
+        near_wall_.push_back(
+            {s.i, s.j, s.distance, s.size, wf.nu_wall, wf.shear(s.slip_speed, s.image_distance, nu), s.wall_function});
+    }
+}
+
+WallTurbulence KEpsilon::at_walls() const {
+    const double nu = settings_.viscosity;
+    return {k_, [nu](double k, double y) { return WallFunction(k, y, nu).nu_wall; }};
 }
 
 // Ghosts of k and eps: inflow values on inflow sides, zero gradient elsewhere (walls: no flux of k; outflow;
@@ -68,7 +92,7 @@ void KEpsilon::set_ghosts(Field2D& f, const double* inflow) const {
     const int nx = grid_.nx(), ny = grid_.ny();
     for (Side s : kSides) {
         if (!grid_.touches(s)) continue;
-        const BoundaryType type = config_.boundary[static_cast<int>(s)].type;
+        const BoundaryType type = settings_.boundary[static_cast<int>(s)].type;
         if (type == BoundaryType::periodic) continue;
         const bool in = inflow && type == BoundaryType::inflow;
         for (int g = 1; g <= kGhost; ++g) {
@@ -99,8 +123,8 @@ void KEpsilon::production(Field2D& P) const {
     auto vorticity = [&](int a, int b) {
         return (vel.v(a, b) - vel.v(a - 1, b)) / X.dc(a) - (vel.u(a, b) - vel.u(a, b - 1)) / Y.dc(b);
     };
-    const bool kato_launder = config_.turbulence.kato_launder;
-    const double limit = config_.turbulence.production_limit;
+    const bool kato_launder = settings_.model.kato_launder;
+    const double limit = settings_.model.production_limit;
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i) {
             const double dudx = (vel.u(i + 1, j) - vel.u(i, j)) / X.w(i);
@@ -126,11 +150,11 @@ std::vector<KEpsilon::WallCell> KEpsilon::wall_cells() const {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     const Velocity& vel = flow_.velocity();
-    const double nu = config_.viscosity;
+    const double nu = settings_.viscosity;
     const int nx = grid_.nx(), ny = grid_.ny();
     for (Side s : kSides) {
-        if (!grid_.touches(s) || !is_wall(config_, s)) continue;
-        const auto& wall = config_.boundary[static_cast<int>(s)].velocity;
+        if (!grid_.touches(s) || !is_wall(settings_, s)) continue;
+        const auto& wall = settings_.boundary[static_cast<int>(s)].velocity;
         if (s == Side::bottom || s == Side::top) {
             const int j = s == Side::bottom ? 0 : ny - 1;
             const double y = 0.5 * Y.w(j);
@@ -160,11 +184,11 @@ std::vector<KEpsilon::WallCell> KEpsilon::wall_cells() const {
 }
 
 void KEpsilon::update(double dt) {
-    const double nu = config_.viscosity;
-    immersed_.locate();
-    const Field2D& fluid = immersed_.fluid();
+    const double nu = settings_.viscosity;
+    carrier_.locate_walls();
+    const Field2D& fluid = carrier_.fluid_cells();
     // k and eps ghosts are current: set at the end of the last update (or by restored()).
-    near_wall_ = immersed_.evaluate(flow_.velocity(), k_);
+    sample_walls();
 
     production(P_);
     const std::vector<WallCell> walls = wall_cells();
@@ -213,23 +237,23 @@ void KEpsilon::update(double dt) {
 int KEpsilon::substeps_for(double dt) const {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
-    const Field2D& fluid = immersed_.fluid();
+    const Field2D& fluid = carrier_.fluid_cells();
     double rate = 0.0;
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i)
             if (fluid(i, j) != 0.0)
-                rate = std::max(rate, (config_.viscosity + model_nu_t_(i, j) / C::sigma_k) *
+                rate = std::max(rate, (settings_.viscosity + model_nu_t_(i, j) / C::sigma_k) *
                                           (1.0 / (X.w(i) * X.w(i)) + 1.0 / (Y.w(j) * Y.w(j))));
     MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
-    return std::max(1, static_cast<int>(std::ceil(dt * rate / config_.diffusion_number)));
+    return std::max(1, static_cast<int>(std::ceil(dt * rate / settings_.diffusion_number)));
 }
 
 // nu_t = C_mu k^2 / eps in the fluid, 0 inside bodies, at least the wall eddy viscosity in the immersed
 // near-wall band; corners average their four cells, except on wall sides: the wall-function value there.
 void KEpsilon::refresh_eddy_viscosity() {
     EddyViscosity& e = flow_.eddy_viscosity();
-    const Field2D& fluid = immersed_.fluid();
-    const double nu = config_.viscosity;
+    const Field2D& fluid = carrier_.fluid_cells();
+    const double nu = settings_.viscosity;
     const int nx = grid_.nx(), ny = grid_.ny();
     for (int j = -kGhost; j < ny + kGhost; ++j)
         for (int i = -kGhost; i < nx + kGhost; ++i)
@@ -246,7 +270,7 @@ void KEpsilon::refresh_eddy_viscosity() {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     for (Side s : kSides) {
-        if (!grid_.touches(s) || !is_wall(config_, s)) continue;
+        if (!grid_.touches(s) || !is_wall(settings_, s)) continue;
         if (s == Side::bottom || s == Side::top) {
             const int j = s == Side::bottom ? 0 : ny - 1, jc = s == Side::bottom ? 0 : ny;
             const double y = 0.5 * Y.w(j);
@@ -268,7 +292,7 @@ void KEpsilon::refresh_eddy_viscosity() {
 
 std::optional<std::string> KEpsilon::check() const {
     int bad[2] = {0, 0};  // non-finite k or eps; runaway nu_t
-    const double limit = 1e8 * config_.viscosity;
+    const double limit = 1e8 * settings_.viscosity;
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i) {
             if (!std::isfinite(k_(i, j)) || !std::isfinite(eps_(i, j))) bad[0] = 1;

@@ -10,27 +10,37 @@
 //   sources    P_k explicit (optionally limited, P_k <= limit * eps), the sinks implicit:
 //              k^{n+1} = (k^n + dt (T_k + P_k)) / (1 + dt eps^n / k^n), likewise for eps with C_2,
 //              so neither can turn negative from its source (Patankar 1980, source linearisation)
-//   walls      the first cell beside a wall side, and the cells beside an immersed surface
-//              (immersed_wall.hpp), take eps and P_k from the log law (wall_function.hpp); k sees no
-//              flux through the wall
+//   walls      the first cell beside a wall side, and the cells beside a body's surface (the carrier's
+//              wall samples, body/carrier.hpp), take eps and P_k from the log law (wall_function.hpp); k
+//              sees no flux through the wall
 //   nu_t       into the flow solver (core/viscous_stress.hpp), with the wall eddy viscosity at wall
 //              corners and in the immersed near-wall band
 // Inflow values: k = 3/2 (I U)^2, eps = C_mu^{3/4} k^{3/2} / l (turbulence.intensity, length_scale).
 #include <optional>
 #include <string>
 
+#include "carrier.hpp"
 #include "case_config.hpp"
 #include "flow_solver.hpp"
 #include "halo_exchange.hpp"
-#include "immersed_boundary.hpp"
-#include "immersed_wall.hpp"
 
 namespace chute {
+
+// What the model needs of a case.
+struct KEpsilonSettings {
+    TurbulenceConfig model;
+    double viscosity = 1e-6;
+    double diffusion_number = 0.2;  // explicit transport's limit (numerics.diffusion_number)
+    std::array<BoundaryConfig, 4> boundary;
+    std::array<double, 2> initial_velocity{0.0, 0.0};
+};
+KEpsilonSettings k_epsilon_settings(const CaseConfig& config);
 
 class KEpsilon {
 public:
     // Throws std::invalid_argument naming the key when the case gives no speed for the initial k.
-    KEpsilon(const CaseConfig& config, FlowSolver& flow, const ImmersedBoundary& bodies);
+    // `carrier` tells where the bodies' walls are.
+    KEpsilon(const KEpsilonSettings& settings, FlowSolver& flow, Carrier& carrier);
 
     // Uniform k and eps of the inflow (or the initial speed); nu_t into the flow solver.
     void set_initial_condition();
@@ -52,8 +62,20 @@ public:
     const Field2D& eddy_viscosity() const { return flow_.eddy_viscosity().cell; }
     double inflow_k() const { return k_in_; }
     double inflow_epsilon() const { return eps_in_; }
+    // k and the wall law, for the turbulent part of the surface forces.
+    WallTurbulence at_walls() const;
 
 private:
+    // A cell beside a body's surface with the wall law applied to the carrier's sample there.
+    struct NearWallCell {
+        int i, j;            // local indices (owned cell)
+        double distance;     // of the cell centre from the surface (m); negative inside the body
+        double size;         // h (m)
+        double nu_wall;      // m^2/s
+        double tau_wall;     // kinematic wall shear, m^2/s^2
+        bool wall_function;  // 0 <= d < h: epsilon and the production of k come from the wall function
+    };
+    void sample_walls();
     struct WallCell {
         int i, j;
         double y;           // distance the log law is applied at
@@ -66,10 +88,10 @@ private:
     void refresh_eddy_viscosity();
     int substeps_for(double dt) const;
 
-    const CaseConfig& config_;
+    KEpsilonSettings settings_;
     FlowSolver& flow_;
     const Grid& grid_;
-    ImmersedWall immersed_;
+    Carrier& carrier_;
     mutable HaloExchange halo_;
     Field2D k_, eps_, model_nu_t_, P_, tk_, te_, was_fluid_;
     std::vector<NearWallCell> near_wall_;

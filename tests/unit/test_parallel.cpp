@@ -9,7 +9,8 @@
 
 #include "flow_solver.hpp"
 #include "gather.hpp"
-#include "coupled_step.hpp"
+#include "model.hpp"
+#include "step.hpp"
 
 using namespace chute;
 
@@ -194,13 +195,11 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
     auto run = [&](MPI_Comm comm, std::array<int, 2> ranks) {
         CaseConfig cc = c;
         cc.ranks = ranks;
-        FlowSolver solver(cc, comm);
-        ImmersedBoundary ibm(solver.grid(), cc);
-        FreeBodies free(cc, ibm);
+        Model model(cc, comm);
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(solver, ibm, free, 0.002);
-            f = ibm.forces(solver.velocity(), solver.pressure());
+            advance(model, 0.002);
+            f = measure_forces(model);
         }
         const BodyForces& b = f[0];
         return std::array<double, 6>{b.forcing.x(), b.forcing.y(), b.surface.pressure.x(), b.surface.pressure.y(),
@@ -243,14 +242,13 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
     auto run = [&](MPI_Comm comm, std::array<int, 2> ranks) {
         CaseConfig cc = c;
         cc.ranks = ranks;
-        FlowSolver solver(cc, comm);
-        ImmersedBoundary ibm(solver.grid(), cc);
-        FreeBodies free(cc, ibm);
-        KEpsilon turbulence(cc, solver, ibm);
+        Model model(cc, comm);
+        const FlowSolver& solver = model.flow();
+        const KEpsilon& turbulence = *model.turbulence();
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(solver, ibm, free, 0.01, &turbulence);
-            f = ibm.forces(solver.velocity(), solver.pressure(), &turbulence.k());
+            advance(model, 0.01);
+            f = measure_forces(model);
         }
         double kmax = 0.0;
         for (int j = 0; j < solver.grid().ny(); ++j)

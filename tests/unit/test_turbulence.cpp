@@ -65,8 +65,9 @@ TEST(KEpsilon, DecayOfHomogeneousTurbulenceFollowsTheClosedForm) {
         c.turbulence.model = TurbulenceModelType::k_epsilon;
         c.turbulence.velocity_scale = 1.0;
         FlowSolver s(c, MPI_COMM_WORLD);
-        ImmersedBoundary none(s.grid(), c);
-        KEpsilon model(c, s, none);
+        std::vector<Body> no_bodies;
+    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
+        KEpsilon model(k_epsilon_settings(c), s, none);
         const double k0 = model.inflow_k(), e0 = model.inflow_epsilon(), T = 2.0 * k0 / e0;
         const int steps = static_cast<int>(std::lround(T / dt));
         for (int n = 0; n < steps; ++n) model.update(T / steps);
@@ -95,8 +96,9 @@ TEST(KEpsilon, UniformCurrentWithoutBodyMakesNoTurbulence) {
     c.convection = ConvectionScheme::van_leer;
     c.turbulence.model = TurbulenceModelType::k_epsilon;
     FlowSolver s(c, MPI_COMM_WORLD);
-    ImmersedBoundary none(s.grid(), c);
-    KEpsilon model(c, s, none);
+    std::vector<Body> no_bodies;
+    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
+    KEpsilon model(k_epsilon_settings(c), s, none);
     const double nu_t_in = KEpsilonConstants::c_mu * model.inflow_k() * model.inflow_k() / model.inflow_epsilon();
     for (int n = 0; n < 400; ++n) {
         const double dt = s.next_dt();
@@ -136,15 +138,16 @@ turbulence: {model: k_epsilon}
 time: {end: 1.0}
 )");
     FlowSolver s(c, MPI_COMM_WORLD);
-    ImmersedBoundary none(s.grid(), c);
+    std::vector<Body> no_bodies;
+    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
     try {
-        KEpsilon model(c, s, none);
+        KEpsilon model(k_epsilon_settings(c), s, none);
         ADD_FAILURE() << "no error";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("turbulence.velocity_scale"), std::string::npos) << e.what();
     }
     c.turbulence.velocity_scale = 2.0;
-    KEpsilon model(c, s, none);
+    KEpsilon model(k_epsilon_settings(c), s, none);
     EXPECT_NEAR(model.inflow_k(), 1.5 * std::pow(0.05 * 2.0, 2), 1e-15);
 }
 
@@ -162,8 +165,9 @@ TEST(KEpsilon, KatoLaunderProductionVanishesInPureStrain) {
         c.turbulence.production_limit = 0.0;
         c.turbulence.kato_launder = kl;
         FlowSolver s(c, MPI_COMM_WORLD);
-        ImmersedBoundary none(s.grid(), c);
-        KEpsilon model(c, s, none);
+        std::vector<Body> no_bodies;
+    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
+        KEpsilon model(k_epsilon_settings(c), s, none);
         const Grid& g = s.grid();
         const double nu_t = model.eddy_viscosity()(3, 3), a = 0.7, shear_rate = 1.3;
         Field2D P(g);

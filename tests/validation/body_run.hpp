@@ -1,6 +1,6 @@
 #pragma once
-// A flow with immersed bodies, stepped as run_simulation steps it (predict, move, force, project), with the
-// force histories the validation tests average. Kept to the loop itself so tests see what users run.
+// A flow with immersed bodies, the model run_simulation builds (run/model.hpp) stepped as it steps it
+// (run/step.hpp), with the force histories the validation tests average. Tests see what users run.
 #include <mpi.h>
 
 #include <cmath>
@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "case_file.hpp"
-#include "flow_solver.hpp"
-#include "coupled_step.hpp"
+#include "immersed_boundary.hpp"
+#include "model.hpp"
+#include "step.hpp"
 
 namespace chute::validation {
 
@@ -30,21 +31,16 @@ struct ForceSample {
 
 class BodyRun {
 public:
-    BodyRun(const CaseConfig& c, MPI_Comm comm) : solver(c, comm), ibm(solver.grid(), c), free(c, ibm) {
-        if (c.turbulence.model == TurbulenceModelType::k_epsilon)
-            turbulence = std::make_unique<KEpsilon>(c, solver, ibm);
-    }
+    // The model keeps its own copy of the case: a temporary `c` is fine.
+    BodyRun(const CaseConfig& c, MPI_Comm comm)
+        : model(c, comm), solver(model.flow()), ibm(dynamic_cast<ImmersedBoundary&>(model.carrier())),
+          free(model.free_bodies()), turbulence(model.turbulence()) {}
 
-    // One step; returns the forces on every body.
+    // One step (dt <= 0: the stable one); returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {
-        advance(solver, ibm, free, dt, turbulence.get());
-        if (ibm.empty()) {
-            history.push_back({solver.time(), BodyForces{}});
-            return last;
-        }
-        last = ibm.forces(solver.velocity(), solver.pressure(), turbulence ? &turbulence->k() : nullptr);
-        free.report(last);
-        history.push_back({solver.time(), last.at(0)});
+        advance(model, dt > 0.0 ? dt : model.stable_dt());
+        last = measure_forces(model);
+        history.push_back({solver.time(), last.empty() ? BodyForces{} : last.at(0)});
         return last;
     }
     void run_to(double t_end, double dt = 0.0) {
@@ -60,10 +56,11 @@ public:
         return n ? s / n : NAN;
     }
 
-    FlowSolver solver;
-    ImmersedBoundary ibm;
-    FreeBodies free;
-    std::unique_ptr<KEpsilon> turbulence;  // when the case asks for k-epsilon
+    Model model;
+    FlowSolver& solver;
+    ImmersedBoundary& ibm;
+    FreeBodies& free;
+    KEpsilon* turbulence;  // when the case asks for k-epsilon
     std::vector<BodyForces> last;
     std::vector<ForceSample> history;
 };

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "wall_function.hpp"
-
 namespace chute {
 
 namespace {
@@ -19,9 +17,8 @@ int cell_containing(const Axis& a, double x) {
 
 }  // namespace
 
-ImmersedWall::ImmersedWall(const Grid& grid, const ImmersedBoundary& bodies, const CaseConfig& config)
-    : grid_(grid), bodies_(bodies), nu_(config.viscosity), image_cells_(config.turbulence.image_distance),
-      fluid_(grid, 1.0) {}
+ImmersedWall::ImmersedWall(const Grid& grid, const std::vector<Body>& bodies, double image_cells)
+    : grid_(grid), bodies_(bodies), image_cells_(image_cells), fluid_(grid, 1.0) {}
 
 double ImmersedWall::cell_size(int gi, int gj) const {
     return std::max(grid_.x_axis().width(gi), grid_.y_axis().width(gj));
@@ -30,7 +27,7 @@ double ImmersedWall::cell_size(int gi, int gj) const {
 void ImmersedWall::locate() {
     if (bodies_.empty()) return;
     // Body::moves() is true for prescribed and free motion alike.
-    const bool any_moves = std::any_of(bodies_.bodies().begin(), bodies_.bodies().end(),
+    const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(),
                                        [](const Body& b) { return b.moves(); });
     if (located_ && !any_moves) return;
     located_ = true;
@@ -40,16 +37,16 @@ void ImmersedWall::locate() {
     if (!static_scanned_) {
         fluid_.fill(1.0);
         band_.clear();
-        for (std::size_t b = 0; b < bodies_.bodies().size(); ++b)
-            if (!bodies_.bodies()[b].moves()) scan_around(b, margin);
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            if (!bodies_[b].moves()) scan_around(b, margin);
         static_fluid_ = fluid_;
         static_band_ = band_;
         static_scanned_ = true;
     }
     fluid_ = static_fluid_;
     band_ = static_band_;
-    for (std::size_t b = 0; b < bodies_.bodies().size(); ++b)
-        if (bodies_.bodies()[b].moves()) scan_around(b, margin);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (bodies_[b].moves()) scan_around(b, margin);
     // A cell near one body may lie inside another (the block resting on the bed): the nearest surface and
     // the sign of the smallest distance decide.
     std::unordered_map<long long, std::size_t> seen;
@@ -72,7 +69,7 @@ void ImmersedWall::locate() {
 
 // A closed body: the cells of its bounding box, widened by `margin` cells; an open line (plane): all cells.
 void ImmersedWall::scan_around(std::size_t b, int margin) {
-    const Body& body = bodies_.bodies()[b];
+    const Body& body = bodies_[b];
     const Axis& ax = grid_.x_axis();
     const Axis& ay = grid_.y_axis();
     if (!body.outline().closed()) return scan(b, 0, ax.cells() - 1, 0, ay.cells() - 1);
@@ -85,7 +82,7 @@ void ImmersedWall::scan_around(std::size_t b, int margin) {
 }
 
 void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
-    const Body& body = bodies_.bodies()[b];
+    const Body& body = bodies_[b];
     const Axis& ax = grid_.x_axis();
     const Axis& ay = grid_.y_axis();
     const LocalAxis& lx = grid_.lx();
@@ -111,8 +108,8 @@ void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
         }
 }
 
-std::vector<NearWallCell> ImmersedWall::evaluate(const Velocity& vel, const Field2D& k) const {
-    std::vector<NearWallCell> out;
+std::vector<WallSample> ImmersedWall::sample(const Velocity& vel, const Field2D& k) const {
+    std::vector<WallSample> out;
     if (band_.empty()) return out;
     const std::vector<Vec2> u = interpolate_velocity(grid_, su_, sv_, vel);
     const std::vector<double> k_image = interpolate(grid_, sk_, k);
@@ -122,11 +119,9 @@ std::vector<NearWallCell> ImmersedWall::evaluate(const Velocity& vel, const Fiel
         const BandCell& c = band_[m];
         const int i = c.gi - lx.offset, j = c.gj - ly.offset;
         if (i < 0 || i >= grid_.nx() || j < 0 || j >= grid_.ny()) continue;
-        const double delta = image_cells_ * c.h;
-        const WallFunction wf(k_image[m], delta, nu_);
-        const Vec2 slip = u[m] - bodies_.bodies()[c.body].velocity_at(c.surface);
+        const Vec2 slip = u[m] - bodies_[c.body].velocity_at(c.surface);
         const double speed = std::abs(slip.dot(perp(c.normal)));
-        out.push_back({i, j, c.d, c.h, wf.nu_wall, wf.shear(speed, delta, nu_), c.d >= 0.0 && c.d < c.h});
+        out.push_back({i, j, c.d, c.h, image_cells_ * c.h, speed, k_image[m], c.d >= 0.0 && c.d < c.h});
     }
     return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Wall functions beside immersed surfaces (the bodies of ibm/), for the k-epsilon model.
+// The walls a turbulence model sees beside immersed surfaces: which cells are solid, which are near a surface,
+// and the flow sampled at an image point of each (body/carrier.hpp, WallSample); the wall law is the model's.
 //
 // Every cell gets the signed distance d to the nearest body surface (Outline::signed_distance; negative
 // inside). Cells with d < 0 are solid: the scalar transport closes their faces. Cells with
@@ -7,7 +8,7 @@
 // For each band cell the flow is sampled at its image point x_s + Delta n, where x_s = x - d n is the
 // nearest surface point and n the outward normal: beyond the reach of the forcing, which smears the
 // velocity over 1.5 cells each side of the surface. From k and the tangential velocity relative to the
-// body there (wall_function.hpp, y = Delta):
+// body there the model's wall law (turbulence/wall_function.hpp, y = Delta) gives
 //   nu_w   the wall eddy viscosity; the band cells get nu_t >= nu_w, so the momentum flux through the
 //          band, (nu + nu_w) U_t / Delta, is the log-law wall shear (the forcing keeps no-slip at the
 //          surface, so without it the shear would be the unresolved nu U_t / Delta)
@@ -15,33 +16,25 @@
 // Static bodies are located once; moving ones every step, within their bounding box.
 #include <vector>
 
-#include "case_config.hpp"
+#include "body.hpp"
+#include "carrier.hpp"
 #include "euler_lagrange.hpp"
 #include "field.hpp"
-#include "immersed_boundary.hpp"
 
 namespace chute {
 
-struct NearWallCell {
-    int i, j;            // local indices (owned cell)
-    double distance;     // d of the cell centre (m); negative inside the body
-    double size;         // h (m)
-    double nu_wall;      // m^2/s
-    double tau_wall;     // kinematic wall shear, m^2/s^2
-    bool wall_function;  // 0 <= d < h: epsilon and the production of k come from the wall function
-};
-
 class ImmersedWall {
 public:
-    ImmersedWall(const Grid& grid, const ImmersedBoundary& bodies, const CaseConfig& config);
+    // image_cells: Delta, in cells (turbulence.image_distance).
+    ImmersedWall(const Grid& grid, const std::vector<Body>& bodies, double image_cells);
 
     bool empty() const { return bodies_.empty(); }
     // Where the bodies are now: the fluid mask and the band (call on every rank after the bodies moved).
     void locate();
     // 1 in fluid cells, 0 inside a body; owned cells and ghosts.
     const Field2D& fluid() const { return fluid_; }
-    // Wall-function values at this rank's band cells, sampled from u^{n+1} and k (collective).
-    std::vector<NearWallCell> evaluate(const Velocity& vel, const Field2D& k) const;
+    // The flow at the image points of this rank's band cells, from u^{n+1} and k (collective).
+    std::vector<WallSample> sample(const Velocity& vel, const Field2D& k) const;
 
 private:
     struct BandCell {
@@ -55,8 +48,8 @@ private:
     double cell_size(int gi, int gj) const;
 
     const Grid& grid_;
-    const ImmersedBoundary& bodies_;
-    double nu_, image_cells_;
+    const std::vector<Body>& bodies_;
+    double image_cells_;
     Field2D fluid_, static_fluid_;
     std::vector<BandCell> band_, static_band_;
     bool static_scanned_ = false;

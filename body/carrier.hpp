@@ -1,0 +1,67 @@
+#pragma once
+// The seam between the time step and whatever carries the bodies through the flow (DESIGN.md, "the carrier
+// seam"). Carrier 1 is the immersed boundary (ibm/immersed_boundary.hpp); carrier 2 will be the body-fitted
+// band. The step (run/step.cpp) calls it in the order of DESIGN.md's data flow:
+//
+//   begin_step(u^n)                       keep what the wrench needs from the start of the step
+//   place(t^{n+1})                        prescribed bodies to their place (free bodies: rigidbody/free_bodies)
+//   impose(u*, dt)                        the bodies on the predicted velocity (forcing, or boundary values)
+//   (pressure projection)
+//   hydrodynamic_wrench(b, u^{n+1}, dt)   on free body b, at its predicted place: what moves it
+//   measure(u^{n+1}, p, turbulence)       the force record of every body, both measures (body_forces.hpp)
+//
+// and the turbulence model asks it where the walls are: fluid_cells(), and sample_walls(u, k) at the cells
+// beside the bodies' surfaces, after locate_walls() (the log law itself is the model's, turbulence/).
+// Free-body dynamics, turbulence, outputs and summaries hold a Carrier&, never a concrete carrier.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "body.hpp"
+#include "body_forces.hpp"
+#include "field.hpp"
+#include "rigid_body.hpp"
+
+namespace chute {
+
+// One cell beside a body's surface, as a wall-function model needs it: where the flow was sampled and what.
+struct WallSample {
+    int i = 0, j = 0;             // local indices of an owned cell
+    double distance = 0.0;        // of the cell centre from the surface (m); negative inside the body
+    double size = 0.0;            // cell size h (m)
+    double image_distance = 0.0;  // distance from the surface of the point sampled (m)
+    double slip_speed = 0.0;      // |tangential velocity relative to the body| there (m/s)
+    double k = 0.0;               // turbulence energy there (m^2/s^2)
+    bool wall_function = false;   // the cell is the wall-adjacent one (0 <= distance < h)
+};
+
+// What the surface forces need of a turbulence model (null: laminar): k, and the wall eddy viscosity its wall
+// law gives at distance y from a wall for energy k (the turbulent part of the surface stress).
+struct WallTurbulence {
+    const Field2D& k;
+    std::function<double(double k, double y)> wall_viscosity;
+};
+
+class Carrier {
+public:
+    virtual ~Carrier() = default;
+
+    virtual const std::vector<Body>& bodies() const = 0;
+    // The grid length along body b's surface: a free body moves at most `cfl` of it in one step.
+    virtual double cell_size(std::size_t b) const = 0;
+
+    virtual void begin_step(const Velocity& start) = 0;
+    virtual void place(double t) = 0;
+    virtual void impose(Velocity& predicted, double dt) = 0;
+    virtual Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) = 0;
+    // p is the kinematic pressure (p / rho) the flow solver holds.
+    virtual std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p,
+                                            const WallTurbulence* turbulence) = 0;
+
+    // Walls for a turbulence model. locate_walls() after the bodies moved (collective).
+    virtual void locate_walls() = 0;
+    virtual const Field2D& fluid_cells() const = 0;  // 1 in fluid cells, 0 inside a body; ghosts included
+    virtual std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const = 0;
+};
+
+}  // namespace chute

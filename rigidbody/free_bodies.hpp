@@ -1,0 +1,77 @@
+#pragma once
+// Free bodies moved by the flow: gravity, buoyancy, the hydrodynamic wrench the carrier measures
+// (body/carrier.hpp), and contact with planes and the domain's walls (contact/).
+//
+// One step (DESIGN.md's data flow), around the flow's predict / impose / project:
+//   predict(t, dt)  before the carrier imposes the bodies: each free body moves over the step with the
+//                   accelerations of the last step (impacts located inside it), so the fluid is forced
+//                   towards where the body will be;
+//   correct(t, dt)  after the projection: this step's hydrodynamic wrench F_h from the carrier, then the body's
+//                   update from its state at t^n with a virtual mass C_V m_f added to both sides (Schwarz,
+//                   Kempe & Froehlich 2015, JCP 281:591), which keeps light bodies stable:
+//                     (m + C_V m_f) a = F_h + (m - m_f) g + C_V m_f a*,   a* the predicted acceleration,
+//                   and the motion over the step with a held, impacts located inside it (contact/).
+// The pressure is dynamic, so buoyancy -m_f g is added explicitly (m_f = rho_f V).
+#include <filesystem>
+#include <vector>
+
+#include "carrier.hpp"
+#include "case_config.hpp"
+#include "checkpoint.hpp"
+#include "impacts.hpp"
+
+namespace chute {
+
+// What free-body dynamics needs of a case.
+struct FreeBodySettings {
+    ContactConfig contact;
+    Vec2 gravity{0.0, -9.81};
+    double fluid_density = 1000.0, depth = 1.0;
+    double virtual_mass = 1.0;  // C_V (numerics.ibm.virtual_mass)
+    std::vector<Obstacle> obstacles;
+};
+FreeBodySettings free_body_settings(const CaseConfig& config);
+
+class FreeBodies {
+public:
+    // `bodies` are the run's (the free ones among them are moved here); `carrier` carries them.
+    FreeBodies(const FreeBodySettings& settings, std::vector<Body>& bodies, Carrier& carrier);
+
+    bool empty() const { return free_.empty(); }
+    // The largest step over which no free body moves more than `cfl` cells (with its present velocity and
+    // acceleration): the flow's CFL limit does not see a body that starts from rest in still fluid.
+    double max_dt(double cfl) const;
+    void predict(double t, double dt);
+    // `vel` is u^{n+1}, from which the carrier measures the hydrodynamic wrench.
+    void correct(double t, double dt, const Velocity& vel);
+
+    // Gravity, buoyancy and contact on body b over the last step (zero for bodies that are not free).
+    const BodyLoads& loads(std::size_t b) const { return loads_[b]; }
+    const std::vector<ContactEvent>& events() const { return events_; }  // this step's impacts
+    const std::vector<Obstacle>& obstacles() const { return settings_.obstacles; }
+    const ContactConfig& contact() const { return settings_.contact; }
+
+    // Everything a restart needs, one array per free body ("free_body_<name>"), and its reading back:
+    // state, held accelerations and contact state.
+    std::vector<CheckpointArray> checkpoint_arrays() const;
+    void restore(const std::filesystem::path& checkpoint);
+
+private:
+    struct Free {
+        std::size_t index = 0;  // in the run's bodies
+        RigidInertia inertia;
+        double fluid_mass = 0.0, fluid_inertia = 0.0;  // rho_f V and rho_f J depth: the displaced fluid
+        BodyState start;                   // at t^n
+        Vec2 acceleration = Vec2::Zero();  // of the last update: the next prediction
+        double angular_acceleration = 0.0;
+        ContactState contact, contact_at_start;
+    };
+    FreeBodySettings settings_;
+    std::vector<Body>& bodies_;
+    Carrier& carrier_;
+    std::vector<Free> free_;
+    std::vector<BodyLoads> loads_;
+    std::vector<ContactEvent> events_;
+};
+
+}  // namespace chute

@@ -1,0 +1,56 @@
+#include "restart_state.hpp"
+
+#include <string>
+#include <vector>
+
+#include "checkpoint.hpp"
+
+namespace chute {
+
+namespace {
+
+std::vector<CheckpointField> checkpoint_fields(Model& model) {
+    FlowSolver& s = model.flow();
+    std::vector<CheckpointField> f = {{"u", &s.velocity().u, 1, 0},
+                                      {"v", &s.velocity().v, 0, 1},
+                                      {"p", &s.pressure(), 0, 0},
+                                      {"p_old", &s.previous_pressure(), 0, 0},
+                                      {"rhs_old_u", &s.previous_rhs().u, 1, 0},
+                                      {"rhs_old_v", &s.previous_rhs().v, 0, 1}};
+    if (KEpsilon* turbulence = model.turbulence()) {
+        f.push_back({"k", &turbulence->k(), 0, 0});
+        f.push_back({"epsilon", &turbulence->epsilon(), 0, 0});
+    }
+    return f;
+}
+
+}  // namespace
+
+std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::path& out_dir, int kept) {
+    const FlowSolver& s = model.flow();
+    const auto path = checkpoint_path(out_dir, s.step());
+    write_checkpoint(s.grid(), path,
+                     {s.step(), s.time(), s.previous_dt(), s.previous_dt(), s.implicit_diffusion()},
+                     checkpoint_fields(model), model.free_bodies().checkpoint_arrays());
+    prune_checkpoints(out_dir, kept);
+    return path;
+}
+
+void restore_run(Model& model, const std::filesystem::path& checkpoint) {
+    FlowSolver& solver = model.flow();
+    const Grid& grid = solver.grid();
+    // Lines may have moved during the run that wrote the checkpoint: take them from the checkpoint.
+    auto [xl, yl] = read_checkpoint_lines(checkpoint);
+    if (static_cast<int>(xl.size()) != grid.global_nx() + 1 || static_cast<int>(yl.size()) != grid.global_ny() + 1)
+        throw std::runtime_error("checkpoint " + checkpoint.string() + ": grid " + std::to_string(xl.size() - 1) +
+                                 "x" + std::to_string(yl.size() - 1) + " does not match the case grid " +
+                                 std::to_string(grid.global_nx()) + "x" + std::to_string(grid.global_ny()));
+    solver.set_grid_lines(xl, yl);
+    const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
+    solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
+    model.free_bodies().restore(checkpoint);
+    model.carrier().place(solver.time());
+    if (KEpsilon* turbulence = model.turbulence()) turbulence->restored();
+}
+
+}  // namespace chute

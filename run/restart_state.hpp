@@ -1,0 +1,19 @@
+#pragma once
+// Everything a run needs to continue bit for bit (CaNS's start-stop test, tests/unit/test_run.cpp): the flow
+// fields and scheme history, k and epsilon, and each free body's state (rigidbody/free_bodies), in one
+// checkpoint file (core/checkpoint.hpp, written atomically).
+#include <filesystem>
+
+#include "model.hpp"
+
+namespace chute {
+
+// Writes out_dir/checkpoint_<step>.h5 and keeps the newest `kept`; returns its path.
+std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::path& out_dir, int kept);
+
+// Continues the model from a checkpoint: grid lines, fields, free bodies, then the bodies placed at its time
+// and the turbulence model's derived fields. std::runtime_error naming the file for a checkpoint of another
+// grid or without a free body's state.
+void restore_run(Model& model, const std::filesystem::path& checkpoint);
+
+}  // namespace chute

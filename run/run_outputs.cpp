@@ -1,0 +1,159 @@
+#include "run_outputs.hpp"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <limits>
+
+#include "checkpoint.hpp"
+#include "gather.hpp"
+#include "hdf5_file.hpp"
+#include "lumped_comparison.hpp"
+#include "restart_state.hpp"
+
+namespace chute {
+
+namespace {
+
+std::vector<std::string> timeseries_columns(const CaseConfig& c) {
+    std::vector<std::string> cols = {"t", "step", "dt", "kinetic_energy", "max_divergence", "poisson_iterations",
+                                     "poisson_residual"};
+    for (std::size_t k = 0; k < c.probes.size(); ++k)
+        for (const char* q : {"u", "v", "p"}) cols.push_back("probe" + std::to_string(k) + "_" + q);
+    return cols;
+}
+
+// The first multiple of `interval` after t (infinity: never).
+double next_time(double t, double interval) {
+    return interval > 0.0 ? (std::floor(t / interval + 1e-9) + 1) * interval : std::numeric_limits<double>::infinity();
+}
+
+bool is_root(MPI_Comm comm) {
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    return rank == 0;
+}
+
+// Collective: rank 0 makes the folder and writes the case as run, before anything else is written there.
+std::filesystem::path prepare(const RunOptions& options, MPI_Comm comm) {
+    if (is_root(comm)) std::filesystem::create_directories(options.out_dir);
+    MPI_Barrier(comm);
+    if (is_root(comm) && !options.case_yaml.empty())
+        write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
+    return options.out_dir;
+}
+
+}  // namespace
+
+FlowHealth flow_health(const FlowSolver& flow) {
+    return {kinetic_energy(flow.grid(), flow.velocity()), max_divergence(flow.grid(), flow.velocity())};
+}
+
+RunOutputs::RunOutputs(Model& model, const RunOptions& options)
+    : model_(model),
+      options_(options),
+      series_(model.flow().grid(), prepare(options, model.flow().grid().comm()), timeseries_columns(model.config()),
+              options.restart ? model.flow().time() : -1.0),
+      body_series_(model.flow().grid(), options.out_dir, model.carrier(), model.config(),
+                   options.restart ? model.flow().time() : -1.0),
+      fields_(model.flow().grid(), options.out_dir, options.restart ? model.flow().step() : -1),
+      contacts_(is_root(model.flow().grid().comm()) && !model.free_bodies().empty() ? options.out_dir / "contacts.csv"
+                                                                                    : std::filesystem::path(),
+                options.restart ? model.flow().time() : -1.0),
+      trajectories_(model.config(), model.carrier()),  // after a restart: of the part run since
+      probes_(model.flow().grid(), model.config().probes),
+      halo_(model.flow().grid()),
+      uc_(model.flow().grid()),
+      vc_(model.flow().grid()),
+      omega_(model.flow().grid()),
+      pressure_pa_(model.flow().grid()),
+      next_field_time_(next_time(model.flow().time(), model.config().field_interval)),
+      next_checkpoint_time_(next_time(model.flow().time(), model.config().checkpoint_interval)) {}
+
+void RunOutputs::start(const FlowHealth& health, const std::vector<BodyForces>& forces) {
+    if (options_.restart) return;
+    if (is_root(model_.flow().grid().comm()) && !model_.free_bodies().empty())
+        write_lumped_comparison(model_.config(), model_.bodies(), model_.free_bodies(), options_.out_dir);
+    write_fields();
+    record(StepStats{}, health, forces);
+}
+
+void RunOutputs::after_step(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
+    const FlowSolver& flow = model_.flow();
+    const CaseConfig& config = model_.config();
+    const auto& events = model_.free_bodies().events();
+    if (!events.empty()) {
+        contacts_.record(events);
+        trajectories_.impacts(events);
+    }
+    const double eps = 1e-12 * config.end_time;
+    if (config.timeseries_every > 0 && flow.step() % config.timeseries_every == 0) record(step, health, forces);
+    if (flow.time() >= next_field_time_ - eps) {
+        write_fields();
+        while (next_field_time_ <= flow.time() + eps) next_field_time_ += config.field_interval;
+    }
+    if (flow.time() >= next_checkpoint_time_ - eps) {
+        write_checkpoint();
+        flush();
+        while (next_checkpoint_time_ <= flow.time() + eps) next_checkpoint_time_ += config.checkpoint_interval;
+    }
+}
+
+std::filesystem::path RunOutputs::finish(bool stepped) {
+    if (stepped || !options_.restart) write_fields();
+    write_checkpoint();
+    flush();
+    return last_checkpoint_;
+}
+
+void RunOutputs::flush() {
+    series_.write_hdf5();
+    body_series_.write_hdf5();
+}
+
+void RunOutputs::write_checkpoint() {
+    last_checkpoint_ = write_run_checkpoint(model_, options_.out_dir, model_.config().checkpoints_kept);
+}
+
+// The solver works with the kinematic pressure p/rho; outputs are in pascals (dynamic pressure).
+void RunOutputs::record(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
+    const FlowSolver& flow = model_.flow();
+    const Grid& grid = flow.grid();
+    std::vector<double> row = {flow.time(), static_cast<double>(flow.step()), step.dt, health.kinetic_energy,
+                               health.max_divergence, static_cast<double>(step.poisson_iterations),
+                               step.poisson_residual};
+    if (probes_.size() > 0) {
+        cell_centred_velocity(grid, flow.velocity(), uc_, vc_);
+        halo_.exchange(uc_);
+        halo_.exchange(vc_);
+        const Field2D& p = flow.pressure();
+        for (int j = -kGhost; j < grid.ny() + kGhost; ++j)
+            for (int i = -kGhost; i < grid.nx() + kGhost; ++i) pressure_pa_(i, j) = model_.config().density * p(i, j);
+        const auto pu = probes_.sample(uc_), pv = probes_.sample(vc_), pp = probes_.sample(pressure_pa_);
+        for (std::size_t k = 0; k < probes_.size(); ++k) row.insert(row.end(), {pu[k], pv[k], pp[k]});
+    }
+    series_.append(row);
+    if (!model_.bodies().empty()) {
+        body_series_.append(flow.time(), forces);
+        trajectories_.observe(flow.time(), forces);
+    }
+}
+
+void RunOutputs::write_fields() {
+    const FlowSolver& flow = model_.flow();
+    const Grid& grid = flow.grid();
+    cell_centred_velocity(grid, flow.velocity(), uc_, vc_);
+    vorticity(grid, flow.velocity(), omega_);
+    const Field2D& p = flow.pressure();
+    for (int j = -kGhost; j < grid.ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid.nx() + kGhost; ++i) pressure_pa_(i, j) = model_.config().density * p(i, j);
+    std::vector<NamedField> out = {{"u", &uc_}, {"v", &vc_}, {"p", &pressure_pa_}, {"vorticity", &omega_}};
+    if (const KEpsilon* turbulence = model_.turbulence()) {
+        out.push_back({"k", &turbulence->k()});
+        out.push_back({"epsilon", &turbulence->epsilon()});
+        out.push_back({"nu_t", &turbulence->eddy_viscosity()});
+    }
+    fields_.write(flow.step(), flow.time(), out);
+}
+
+}  // namespace chute

@@ -1,0 +1,41 @@
+#include "step.hpp"
+
+namespace chute {
+
+StepStats advance(Model& model, double dt, StageTimer* timer) {
+    FlowSolver& flow = model.flow();
+    Carrier& carrier = model.carrier();
+    FreeBodies& free_bodies = model.free_bodies();
+    const double t = flow.time();
+    flow.set_timer(timer);
+
+    carrier.begin_step(flow.velocity());
+    dt = flow.predict(dt);
+    {
+        StageTimer::Scope timed(timer, "bodies");
+        free_bodies.predict(t, dt);
+        carrier.place(t + dt);
+        carrier.impose(flow.predicted(), dt);
+    }
+    const StepStats stats = flow.project();
+    {
+        StageTimer::Scope timed(timer, "bodies");
+        free_bodies.correct(t, dt, flow.velocity());
+    }
+    if (KEpsilon* turbulence = model.turbulence()) {
+        StageTimer::Scope timed(timer, "turbulence");
+        turbulence->update(dt);
+    }
+    return stats;
+}
+
+std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer) {
+    StageTimer::Scope timed(timer, "forces");
+    const std::optional<WallTurbulence> turbulence = model.wall_turbulence();
+    std::vector<BodyForces> forces =
+        model.carrier().measure(model.flow().velocity(), model.flow().pressure(), turbulence ? &*turbulence : nullptr);
+    for (std::size_t b = 0; b < forces.size(); ++b) forces[b].loads = model.free_bodies().loads(b);
+    return forces;
+}
+
+}  // namespace chute

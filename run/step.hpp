@@ -1,0 +1,27 @@
+#pragma once
+// One time step of the model, in the order of DESIGN.md's data flow:
+//
+//   momentum prediction u*            (FlowSolver::predict: advection, diffusion with nu + nu_t)
+//   bodies to t^{n+1}, imposed on u*  (free bodies predicted, prescribed ones placed; the carrier's forcing)
+//   pressure projection               (FlowSolver::project: hypre)
+//   rigid-body update and contact     (the carrier's hydrodynamic wrench on each free body; impacts)
+//   turbulence update                 (k-epsilon from u^{n+1})
+//   force measures                    (both, on every body: measure_forces)
+//
+// Stages are timed into the StageTimer (null: not timed) under the names above' short forms: "momentum",
+// "poisson", "correction" (from the flow solver), "bodies", "turbulence", "forces".
+#include <vector>
+
+#include "model.hpp"
+#include "stage_timer.hpp"
+
+namespace chute {
+
+// Advances the model by dt (> 0; Model::stable_dt() gives the stable one).
+StepStats advance(Model& model, double dt, StageTimer* timer = nullptr);
+
+// The force record of every body after the step (body/body_forces.hpp): (a) and (b) from the carrier, gravity,
+// buoyancy and contact from free-body dynamics.
+std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer = nullptr);
+
+}  // namespace chute
