@@ -26,9 +26,9 @@ double since(clock::time_point t0) { return std::chrono::duration<double>(clock:
 
 // Grid, decomposition and body problems found only now (the rank count is not in the case file) are case
 // errors too: same exit code, same kind of message, and nothing is written.
-std::unique_ptr<Model> build_model(const CaseConfig& config, MPI_Comm comm) {
+std::unique_ptr<Model> build_model(const CaseConfig& config, const std::string& carrier, MPI_Comm comm) {
     try {
-        return std::make_unique<Model>(config, comm);
+        return std::make_unique<Model>(config, comm, carrier);
     } catch (const std::invalid_argument& e) {
         throw CaseError(e.what());
     }
@@ -109,7 +109,7 @@ void finish_summary(RunSummary& s, const Model& model, const StageTimer& stages,
 }  // namespace
 
 RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, MPI_Comm comm) {
-    const std::unique_ptr<Model> model = build_model(config, comm);
+    const std::unique_ptr<Model> model = build_model(config, options.carrier, comm);
     if (options.restart) restore_run(*model, *options.restart);
     RunOutputs outputs(*model, options);
     if (!options.restart) outputs.start(flow_health(model->flow()), measure_forces(*model));

@@ -29,6 +29,7 @@ struct RunOptions {
     std::optional<std::filesystem::path> restart;  // checkpoint to continue from
     std::string case_yaml;                          // the case as run, saved as out_dir/case.yaml
     bool quiet = false;                             // no progress lines (tests)
+    std::string carrier = "immersed";               // how bodies are carried: a name registered in carriers.hpp
 };
 
 struct RunSummary {
