@@ -1,40 +1,19 @@
-// Case files: YAML text -> table of key paths -> checks -> CaseConfig.
-//
-//   1. yaml-cpp parses the text; a syntax error becomes a CaseError with its line and column.
-//   2. Reader::add_document() walks the mappings and files every key under its full path
-//      ("boundaries.left.velocity"). A key the schema does not know is an error, with the nearest known
-//      key suggested (optimal string alignment distance) or the keys allowed there listed.
-//   3. Reader::add_override() applies each --set: it replaces (or adds) that path and its sub-keys.
-//   4. Reader::check_presence(): required keys are given; conditional keys (`when`) appear only where they
-//      apply and, when required, are given there.
-//   5. Reader::build(): typed reads against the schema (type, range, choices; absent keys take the
-//      schema's default, so the documented default is the one used), then the checks that involve
-//      several keys (end > start, periodic pairs, wall velocity tangential, probes inside, ...).
+// Case files: the schema as data, read by the generic reader (case_reader.hpp: YAML, --set overrides,
+// unknown keys, presence, typed reads), then build(): the typed reads into a CaseConfig and the checks that
+// involve several keys (end > start, periodic pairs, wall velocity tangential, probes inside, ...).
 #include "case_file.hpp"
-
-#include "axis.hpp"
-
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <charconv>
-#include <climits>
 #include <cmath>
 #include <fstream>
-#include <initializer_list>
-#include <map>
 #include <sstream>
-#include <utility>
+
+#include "axis.hpp"
 
 namespace chute {
 
 namespace {
-
-constexpr Bound above(double v) { return {v, false}; }
-constexpr Bound at_least(double v) { return {v, true}; }
-constexpr Bound at_most(double v) { return {v, true}; }
 
 std::vector<CaseKey> make_schema() {
     using K = KeyType;
@@ -700,819 +679,327 @@ std::vector<CaseKey> make_schema() {
     };
 }
 
-// ---- key paths -------------------------------------------------------------------------------------
-
 constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
 
-// A body name: letters, digits, '_' and '-', starting with a letter.
-bool is_body_name(std::string_view s) {
-    if (s.empty() || !std::isalpha(static_cast<unsigned char>(s[0]))) return false;
-    return std::all_of(s.begin(), s.end(),
-                       [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'; });
+const std::vector<Placeholder>& case_placeholders() {
+    static const std::vector<Placeholder> placeholders = {
+        {"<axis>", {"x", "y"}}, {"<side>", {kSideNames.begin(), kSideNames.end()}}, {"<body>"}};
+    return placeholders;
 }
 
-// The names a path segment stands for: a placeholder's values, or itself. (`<body>` stands for any body
-// name and is matched by segment_matches.)
-std::vector<std::string_view> expand(std::string_view segment) {
-    if (segment == "<axis>") return {"x", "y"};
-    if (segment == "<side>") return {kSideNames.begin(), kSideNames.end()};
-    return {segment};
-}
-
-std::vector<std::string_view> split(std::string_view path) {
-    std::vector<std::string_view> parts;
-    if (path.empty()) return parts;
-    for (std::size_t begin = 0;;) {
-        const std::size_t dot = path.find('.', begin);
-        parts.push_back(path.substr(begin, dot == std::string_view::npos ? dot : dot - begin));
-        if (dot == std::string_view::npos) return parts;
-        begin = dot + 1;
-    }
-}
-
-std::string_view parent_of(std::string_view path) {
-    const std::size_t dot = path.rfind('.');
-    return dot == std::string_view::npos ? std::string_view{} : path.substr(0, dot);
-}
-
-std::string_view leaf_of(std::string_view path) {
-    const std::size_t dot = path.rfind('.');
-    return dot == std::string_view::npos ? path : path.substr(dot + 1);
-}
-
-std::string join(std::string_view parent, std::string_view leaf) {
-    return parent.empty() ? std::string(leaf) : std::string(parent) + "." + std::string(leaf);
-}
-
-std::string indexed(std::string_view path, std::size_t i) {
-    return std::string(path) + "[" + std::to_string(i) + "]";
-}
-
-// Does the concrete path ("boundaries.left.type") match the schema pattern ("boundaries.<side>.type")?
-bool segment_matches(std::string_view pattern, std::string_view name) {
-    if (pattern == "<body>") return is_body_name(name);
-    const auto names = expand(pattern);
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-bool matches(std::string_view pattern, std::string_view path) {
-    const auto a = split(pattern), b = split(path);
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (!segment_matches(a[i], b[i])) return false;
-    return true;
-}
-
-const CaseKey* find_key(std::string_view path) {
-    for (const CaseKey& key : case_schema())
-        if (matches(key.path, path)) return &key;
-    return nullptr;
-}
-
-// The key names the schema allows directly under a concrete section ("" for the top level).
-std::vector<std::string> keys_under(std::string_view section) {
-    std::vector<std::string> names;
-    for (const CaseKey& key : case_schema())
-        if (matches(parent_of(key.path), section))
-            for (std::string_view name : expand(leaf_of(key.path))) names.emplace_back(name);
-    return names;
-}
-
-// ---- text helpers ----------------------------------------------------------------------------------
-
-std::string fmt(double v) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, result.ptr);
-}
-
-std::string list(const std::vector<std::string_view>& items, std::string_view last_sep = ", ") {
-    std::string s;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) s += (i + 1 == items.size()) ? last_sep : ", ";
-        s += items[i];
-    }
-    return s;
-}
-
-// The gist of a key's meaning, for a hint: its text up to the first '.', ';' or ':'.
-std::string gist(std::string_view text) {
-    std::size_t stop = text.size();
-    for (std::string_view mark : {". ", "; ", ": "}) stop = std::min(stop, text.find(mark));
-    std::string s(text.substr(0, stop));
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-}
-
-// Optimal string alignment distance: edits, with a swap of neighbours counting as one.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i)
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    return d[a.size()][b.size()];
-}
-
-// The candidate nearest to `word`, if it is near enough to be a likely typo.
-std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
-    const std::size_t limit = std::clamp<std::size_t>(word.size() / 3, 1, 3);
-    std::optional<std::string> best;
-    std::size_t best_distance = limit + 1;
-    for (const std::string& c : candidates) {
-        const std::size_t d = edit_distance(word, c);
-        if (d < best_distance) best = c, best_distance = d;
-    }
-    return best;
-}
-
-// The hint after "unknown key": the likely intended key, or the keys allowed there.
-std::string unknown_key_hint(std::string_view path) {
-    const std::string_view section = parent_of(path), name = leaf_of(path);
-    const std::vector<std::string> siblings = keys_under(section);
-    if (auto best = nearest(name, siblings)) return "; did you mean '" + join(section, *best) + "'?";
-    for (const CaseKey& key : case_schema())
-        if (leaf_of(key.path) == name) return "; did you mean '" + std::string(key.path) + "'?";
-    std::string hint = section.empty() ? "; top-level keys: " : "; keys in " + std::string(section) + ": ";
-    for (std::size_t i = 0; i < siblings.size(); ++i) hint += (i ? ", " : "") + siblings[i];
-    return hint;
-}
-
-std::string describe(const YAML::Node& n) {
-    switch (n.Type()) {
-        case YAML::NodeType::Scalar:
-            return "'" + n.Scalar() + "'";
-        case YAML::NodeType::Sequence:
-            return "a list";
-        case YAML::NodeType::Map:
-            return "a mapping";
-        default:
-            return "nothing (empty value)";
-    }
-}
-
-std::string range_text(const CaseKey& k, bool in_sentence) {
-    std::string r;
-    if (k.min && k.max)
-        r = std::string(in_sentence ? "in " : "") + (k.min->inclusive ? "[" : "(") + fmt(k.min->value) +
-            ", " + fmt(k.max->value) + (k.max->inclusive ? "]" : ")");
-    else if (k.min)
-        r = (k.min->inclusive ? ">= " : "> ") + fmt(k.min->value);
-    else if (k.max)
-        r = (k.max->inclusive ? "<= " : "< ") + fmt(k.max->value);
-    if (k.also) r = fmt(*k.also) + " or " + r;
-    return r;
-}
-
-template <class E>
-E to_enum(std::string_view path, const std::string& value,
-          std::initializer_list<std::pair<std::string_view, E>> table) {
-    for (const auto& [name, e] : table)
-        if (name == value) return e;
-    throw std::logic_error("case_file: choice '" + value + "' of " + std::string(path) +
-                           " has no enum value");
-}
-
-YAML::Node load_yaml(const std::string& text, const std::string& file) {
-    try {
-        return YAML::Load(text);
-    } catch (const YAML::Exception& e) {
-        std::string where = file.empty() ? "" : file + ", ";
-        if (!e.mark.is_null())
-            where +=
-                "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1);
-        throw CaseError(where + ": YAML syntax error: " + e.msg);
-    }
-}
-
-// ---- the reader ------------------------------------------------------------------------------------
-
-class Reader {
-  public:
-    Reader(std::string file, std::string default_name)
-        : file_(std::move(file)), default_name_(std::move(default_name)) {}
-
-    void add_document(const YAML::Node& root) {
-        if (!root.IsDefined() || root.IsNull()) return;  // an empty file: the required keys are missing
-        if (!root.IsMap())
-            fail("", "a case is a mapping of keys (key: value lines), got " + describe(root), &root);
-        flatten(root, "");
-    }
-
-    void add_override(const std::string& text) {
-        const std::string where = "--set " + text;
-        const std::size_t eq = text.find('=');
-        if (eq == std::string::npos) throw CaseError(where + ": expected key.path=value");
-        const std::string path = trim(text.substr(0, eq));
-        if (path.empty()) throw CaseError(where + ": no key path before '='");
-        // Every step of the path must be a known key, and all but the last a section.
-        const auto steps = split(path);
-        std::string prefix;
-        for (std::size_t i = 0; i < steps.size(); ++i) {
-            prefix = join(prefix, steps[i]);
-            const CaseKey* key = find_key(prefix);
-            if (!key) throw CaseError(where + ": " + prefix + ": unknown key" + unknown_key_hint(prefix));
-            if (i + 1 < steps.size() && key->type != KeyType::section)
-                throw CaseError(where + ": " + prefix + ": takes a value, it has no sub-keys");
-            if (i + 1 < steps.size() && !entries_.contains(prefix))
-                entries_[prefix] = {YAML::Node(YAML::NodeType::Null), YAML::Mark::null_mark(), text};
-        }
-        YAML::Node value;
-        try {
-            value = YAML::Load(text.substr(eq + 1));
-        } catch (const YAML::Exception& e) {
-            throw CaseError(where + ": " + path + ": YAML syntax error in the value: " + e.msg);
-        }
-        // The new value replaces the old one and everything under it.
-        std::erase_if(entries_, [&](const auto& entry) {
-            return entry.first == path || entry.first.starts_with(path + ".");
-        });
-        entries_[path] = {value, YAML::Mark::null_mark(), text};
-        if (find_key(path)->type == KeyType::section) flatten_section(value, path);
-    }
-
-    CaseConfig build() const {
-        check_presence();
-        CaseConfig c;
-
-        c.name = present("name") ? string("name") : default_name_;
-        if (c.name.empty()) fail("name", "must not be empty");
-        if (c.name.find_first_of("/\\") != std::string::npos)
-            fail("name",
-                 "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
-
-        read_axis("domain.x", c.x);
-        read_axis("domain.y", c.y);
-        c.depth = number("domain.depth");
-
-        c.density = number("fluid.density");
-        c.viscosity = number("fluid.viscosity");
-        c.body_force = vector2("fluid.body_force");
-        c.gravity = vector2("gravity");
-        c.contact.law = to_enum<ReboundLaw>("contact.law", choice("contact.law"),
-                                            {{"lumped", ReboundLaw::lumped},
-                                             {"impulse", ReboundLaw::impulse},
-                                             {"soft", ReboundLaw::soft}});
-        c.contact.normal_restitution = number("contact.normal_restitution");
-        c.contact.tangential_restitution = number("contact.tangential_restitution");
-        c.contact.rest_speed = number("contact.rest_speed");
-        c.contact.friction = number("contact.friction");
-        c.contact.distance = number("contact.distance");
-        c.contact.duration = number("contact.duration");
-        c.lumped.drag_coefficient = number("lumped.drag_coefficient");
-        c.lumped.added_mass_coefficient = number("lumped.added_mass_coefficient");
-
-        c.turbulence.model = to_enum<TurbulenceModelType>(
-            "turbulence.model", choice("turbulence.model"),
-            {{"laminar", TurbulenceModelType::laminar}, {"k_epsilon", TurbulenceModelType::k_epsilon}});
-        c.turbulence.intensity = number("turbulence.intensity");
-        c.turbulence.length_scale = number("turbulence.length_scale");
-        c.turbulence.velocity_scale = number("turbulence.velocity_scale");
-        c.turbulence.production_limit = number("turbulence.production_limit");
-        c.turbulence.kato_launder = choice("turbulence.production") == "kato_launder";
-        c.turbulence.image_distance = number("turbulence.image_distance");
-
-        c.initial = to_enum<InitialCondition>(
-            "initial.type", choice("initial.type"),
-            {{"uniform", InitialCondition::uniform}, {"taylor_green", InitialCondition::taylor_green}});
-        c.initial_velocity = vector2("initial.velocity");
-        c.taylor_green_amplitude = number("initial.amplitude");
-        c.initial_perturbation = number("initial.perturbation");
-
-        for (int s = 0; s < 4; ++s) read_boundary(s, c.boundary[s]);
-        check_boundaries(c);
-
-        read_ibm(c.ibm);
-        read_bodies(c);
-
-        c.convection = to_enum<ConvectionScheme>("numerics.convection", choice("numerics.convection"),
-                                                 {{"central", ConvectionScheme::central},
-                                                  {"van_leer", ConvectionScheme::van_leer},
-                                                  {"koren", ConvectionScheme::koren}});
-        c.cfl = number("numerics.cfl");
-        c.diffusion_number = number("numerics.diffusion_number");
-        c.diffusion = to_enum<DiffusionScheme>("numerics.diffusion", choice("numerics.diffusion"),
-                                               {{"explicit", DiffusionScheme::explicit_ab2},
-                                                {"implicit", DiffusionScheme::implicit_euler},
-                                                {"auto", DiffusionScheme::automatic}});
-        c.fixed_dt = number_or_auto("numerics.dt");
-        c.max_dt = number("numerics.max_dt");
-        if (c.fixed_dt && *c.fixed_dt > c.max_dt)
-            fail("numerics.dt",
-                 "must not exceed numerics.max_dt (" + fmt(c.max_dt) + "), got " + fmt(*c.fixed_dt));
-        c.poisson_tolerance = number("numerics.poisson.tolerance");
-        c.poisson_max_iterations = static_cast<int>(integer("numerics.poisson.max_iterations"));
-        c.divergence_limit = number("numerics.divergence_limit");
-
-        c.end_time = number("time.end");
-        c.max_steps = integer("time.max_steps");
-
-        c.ranks = integer_vector2("parallel.ranks");
-
-        c.field_interval = number("output.fields_interval");
-        c.checkpoint_interval = number("output.checkpoint_interval");
-        c.checkpoints_kept = static_cast<int>(integer("output.checkpoints_kept"));
-        c.timeseries_every = static_cast<int>(integer("output.timeseries_every"));
-        c.progress_interval = number("output.progress_interval");
-        c.probes = point_list("output.probes");
-        for (std::size_t i = 0; i < c.probes.size(); ++i) {
-            const auto [px, py] = c.probes[i];
-            if (px < c.x.start || px > c.x.end || py < c.y.start || py > c.y.end)
-                fail(indexed("output.probes", i),
-                     "point [" + fmt(px) + ", " + fmt(py) + "] lies outside the domain [" + fmt(c.x.start) +
-                         ", " + fmt(c.x.end) + "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]");
-        }
-        c.plots = boolean("output.plots");
-        return c;
-    }
-
-  private:
-    struct Entry {
-        YAML::Node node;
-        YAML::Mark key_mark;  // where the key itself is written (null: made by a --set)
-        std::string origin;   // the --set that gave it; empty: the file
-    };
-
-    static std::string trim(const std::string& s) {
-        const std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-        return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
-    }
-
-    void flatten(const YAML::Node& map, const std::string& section) {
-        for (const auto& item : map) {
-            const YAML::Node& key = item.first;
-            if (!key.IsScalar()) fail(section, "keys must be plain names, got " + describe(key), &key);
-            const std::string path = join(section, key.Scalar());
-            if (!find_key(path)) fail(path, "unknown key" + unknown_key_hint(path), &key);
-            if (const auto old = entries_.find(path); old != entries_.end()) {
-                const YAML::Mark m = old->second.key_mark;
-                fail(path,
-                     "given twice" +
-                         (m.is_null() ? "" : " (first on line " + std::to_string(m.line + 1) + ")"),
-                     &key);
-            }
-            const std::string origin = origin_of(section);
-            entries_[path] = {item.second, key.Mark(), origin};
-            if (find_key(path)->type == KeyType::section) flatten_section(item.second, path);
-        }
-    }
-
-    void flatten_section(const YAML::Node& value, const std::string& path) {
-        if (value.IsMap())
-            flatten(value, path);
-        else if (!value.IsNull())
-            fail(path, "expected a mapping of keys (key: value), got " + describe(value), &value);
-    }
-
-    std::string origin_of(std::string_view section) const {
-        const auto it = entries_.find(section);
-        return it == entries_.end() ? std::string{} : it->second.origin;
-    }
-
-    // The entry at `path` or, if that is absent, at its nearest ancestor.
-    const Entry* nearest_entry(std::string_view path) const {
-        std::string_view p = path.substr(0, path.find('['));
-        for (; !p.empty(); p = parent_of(p))
-            if (const auto it = entries_.find(p); it != entries_.end()) return &it->second;
-        return nullptr;
-    }
-
-    // "file, line N", or "--set key=value", for an error about `path`: the line of its value `node` if
-    // given, else of the key itself or, for a missing key, of its section's key.
-    std::string where(std::string_view path, const YAML::Node* node) const {
-        const Entry* e = nearest_entry(path);
-        if (e && !e->origin.empty()) return "--set " + e->origin;
-        YAML::Mark mark = YAML::Mark::null_mark();
-        if (node && node->IsDefined())
-            mark = node->Mark();
-        else if (e)
-            mark = e->key_mark;
-        std::string s = file_;
-        if (!mark.is_null())
-            s += (s.empty() ? "" : ", ") + std::string("line ") + std::to_string(mark.line + 1);
-        return s;
-    }
-
-    [[noreturn]] void fail(std::string_view path, const std::string& reason,
-                           const YAML::Node* node = nullptr) const {
-        const std::string w = where(path, node);
-        throw CaseError((w.empty() ? "" : w + ": ") + (path.empty() ? "" : std::string(path) + ": ") +
-                        reason);
-    }
-
-    bool present(std::string_view path) const { return entries_.contains(path); }
-
-    // Every concrete section present that matches a schema section pattern ("" is the top level).
-    std::vector<std::string> instances(std::string_view pattern) const {
-        if (pattern.empty()) return {""};
-        std::vector<std::string> found;
-        for (const auto& [path, entry] : entries_)
-            if (matches(pattern, path)) found.push_back(path);
-        return found;
-    }
-
-    void check_presence() const {
-        for (const CaseKey& k : case_schema()) {
-            for (const std::string& section : instances(parent_of(k.path))) {
-                for (std::string_view name : expand(leaf_of(k.path))) {
-                    const std::string path = join(section, name);
-                    std::string condition;  // the value of the `when` key, if the key does not apply
-                    bool applies = true;
-                    if (!k.when_key.empty()) {
-                        condition = choice(join(section, k.when_key));
-                        applies = std::find(k.when_values.begin(), k.when_values.end(), condition) !=
-                                  k.when_values.end();
-                    }
-                    if (present(path) && !applies)
-                        fail(path, "not used when " + std::string(k.when_key) + " is '" + condition +
-                                       "' (only with " + std::string(k.when_key) + ": " +
-                                       list(k.when_values, " or ") + ")");
-                    if (!present(path) && applies && k.required)
-                        fail(path,
-                             "missing required key (" +
-                                 (k.type == KeyType::choice ? "one of " + list(k.choices) : gist(k.meaning)) +
-                                 (k.when_key.empty() ? ""
-                                                     : "; needed when " + std::string(k.when_key) + " is '" +
-                                                           condition + "'") +
-                                 ")");
-                }
-            }
-        }
-    }
-
-    // ---- typed reads: the value given, or the schema's default; checked against the schema ----
-
-    const CaseKey& key(std::string_view path, KeyType type) const {
-        const CaseKey* k = find_key(path);
-        if (!k || k->type != type)
-            throw std::logic_error("case_file: no schema key '" + std::string(path) + "' of the type read");
-        return *k;
-    }
-
-    YAML::Node node(std::string_view path, const CaseKey& k) const {
-        if (const auto it = entries_.find(path); it != entries_.end()) return it->second.node;
-        if (k.default_value.empty())
-            throw std::logic_error("case_file: '" + std::string(path) +
-                                   "' read with no value and no default");
-        return YAML::Load(std::string(k.default_value));
-    }
-
-    void check_range(std::string_view path, const YAML::Node& n, double v, const CaseKey& k) const {
-        const bool above_min = !k.min || (k.min->inclusive ? v >= k.min->value : v > k.min->value);
-        const bool below_max = !k.max || (k.max->inclusive ? v <= k.max->value : v < k.max->value);
-        if (!(above_min && below_max) && !(k.also && v == *k.also))
-            fail(path, "must be " + range_text(k, true) + ", got " + n.Scalar(), &n);
-    }
-
-    double to_number(std::string_view path, const YAML::Node& n, const CaseKey& k) const {
-        double v = 0.0;
-        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
-            fail(path, "expected a number, got " + describe(n), &n);
-        if (!std::isfinite(v)) fail(path, "expected a finite number, got " + describe(n), &n);
-        check_range(path, n, v, k);
-        return v;
-    }
-
-    long to_integer(std::string_view path, const YAML::Node& n, const CaseKey& k) const {
-        double v = 0.0;
-        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v) || std::floor(v) != v)
-            fail(path, "expected an integer, got " + describe(n), &n);
-        check_range(path, n, v, k);
-        if (std::abs(v) > INT_MAX)
-            fail(path, "is too large (at most " + std::to_string(INT_MAX) + "), got " + n.Scalar(), &n);
-        return static_cast<long>(v);
-    }
-
-    // A list of exactly 2 items (`what`, e.g. "2 numbers like [1, 0]"), each read by `item`.
-    template <class T, class Item>
-    std::array<T, 2> read_pair(std::string_view path, const YAML::Node& n, const std::string& what,
-                               Item item) const {
-        if (!n.IsSequence()) fail(path, "expected " + what + ", got " + describe(n), &n);
-        if (n.size() != 2)
-            fail(path,
-                 "expected " + what.substr(0, what.find(" like")) + ", got " + std::to_string(n.size()) +
-                     (n.size() == 1 ? " item" : " items"),
-                 &n);
-        std::array<T, 2> v{};
-        std::size_t i = 0;
-        for (const auto& element : n) v[i] = item(indexed(path, i), element), ++i;
-        return v;
-    }
-
-    double number(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::number);
-        return to_number(path, node(path, k), k);
-    }
-
-    long integer(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::integer);
-        return to_integer(path, node(path, k), k);
-    }
-
-    bool boolean(std::string_view path) const {
-        const YAML::Node n = node(path, key(path, KeyType::boolean));
-        bool v = false;
-        if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v))
-            fail(path, "expected true or false, got " + describe(n), &n);
-        return v;
-    }
-
-    std::string string(std::string_view path) const {
-        const YAML::Node n = node(path, key(path, KeyType::string));
-        if (!n.IsScalar()) fail(path, "expected a text, got " + describe(n), &n);
-        return n.Scalar();
-    }
-
-    std::string choice(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::choice);
-        const YAML::Node n = node(path, k);
-        if (!n.IsScalar()) fail(path, "expected one of " + list(k.choices) + ", got " + describe(n), &n);
-        const std::string& v = n.Scalar();
-        if (std::find(k.choices.begin(), k.choices.end(), v) != k.choices.end()) return v;
-        std::string reason = "invalid choice '" + v + "'; choices: " + list(k.choices);
-        if (auto best = nearest(v, std::vector<std::string>(k.choices.begin(), k.choices.end())))
-            reason += " (did you mean '" + *best + "'?)";
-        fail(path, reason, &n);
-    }
-
-    std::array<double, 2> vector2(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::vector2);
-        return read_pair<double>(
-            path, node(path, k), "a list of 2 numbers like [1, 0]",
-            [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); });
-    }
-
-    std::array<int, 2> integer_vector2(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::integer_vector2);
-        return read_pair<int>(
-            path, node(path, k), "a list of 2 integers like [2, 1]",
-            [&](const std::string& p, const YAML::Node& e) { return static_cast<int>(to_integer(p, e, k)); });
-    }
-
-    std::vector<double> number_list(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::number_list);
-        const YAML::Node n = node(path, k);
-        if (!n.IsSequence())
-            fail(path, "expected a list of numbers like [0, 0.5, 1], got " + describe(n), &n);
-        std::vector<double> v;
-        for (const auto& element : n) v.push_back(to_number(indexed(path, v.size()), element, k));
-        return v;
-    }
-
-    std::vector<std::array<double, 2>> point_list(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::point_list);
-        const YAML::Node n = node(path, k);
-        if (!n.IsSequence())
-            fail(path, "expected a list of points like [[0.5, 0.5]], got " + describe(n), &n);
-        std::vector<std::array<double, 2>> v;
-        for (const auto& element : n)
-            v.push_back(read_pair<double>(
-                indexed(path, v.size()), element, "a point [x, y] like [0.5, 0.5]",
-                [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); }));
-        return v;
-    }
-
-    std::optional<double> number_or_auto(std::string_view path) const {
-        const CaseKey& k = key(path, KeyType::number_or_auto);
-        const YAML::Node n = node(path, k);
-        double v = 0.0;
-        if (n.IsScalar() && n.Scalar() == "auto") return std::nullopt;
-        if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
-            fail(path, "expected auto or a number, got " + describe(n), &n);
-        check_range(path, n, v, k);
-        return v;
-    }
-
-    // ---- sections read as a whole, and the checks across keys ----
-
-    void read_axis(const std::string& p, AxisConfig& a) const {
-        a.spacing = choice(p + ".spacing");
-        a.beta = number(p + ".beta");
-        a.ratio = number(p + ".ratio");
-        if (a.spacing == "lines") {
-            a.lines = number_list(p + ".lines");
-            if (a.lines.size() < 3)
-                fail(p + ".lines",
-                     "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
-            for (std::size_t i = 1; i < a.lines.size(); ++i)
-                if (!(a.lines[i] > a.lines[i - 1]))
-                    fail(indexed(p + ".lines", i), "lines must be strictly increasing, got " +
-                                                       fmt(a.lines[i]) + " after " + fmt(a.lines[i - 1]));
-            a.start = a.lines.front();
-            a.end = a.lines.back();
-            a.cells = static_cast<int>(a.lines.size()) - 1;
+// ---- sections read as a whole, and the checks across keys ----
+
+void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
+    a.spacing = r.choice(p + ".spacing");
+    a.beta = r.number(p + ".beta");
+    a.ratio = r.number(p + ".ratio");
+    if (a.spacing == "lines") {
+        a.lines = r.number_list(p + ".lines");
+        if (a.lines.size() < 3)
+            r.fail(p + ".lines", "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
+        for (std::size_t i = 1; i < a.lines.size(); ++i)
+            if (!(a.lines[i] > a.lines[i - 1]))
+                r.fail(CaseReader::indexed(p + ".lines", i), "lines must be strictly increasing, got " +
+                                                                 exact_text(a.lines[i]) + " after " +
+                                                                 exact_text(a.lines[i - 1]));
+        a.start = a.lines.front();
+        a.end = a.lines.back();
+        a.cells = static_cast<int>(a.lines.size()) - 1;
+    } else {
+        a.start = r.number(p + ".start");
+        a.end = r.number(p + ".end");
+        if (!(a.end > a.start))
+            r.fail(p + ".end",
+                   "must be greater than " + p + ".start (" + exact_text(a.start) + "), got " + exact_text(a.end));
+        if (a.spacing == "clustered") {
+            a.core = r.vector2(p + ".core");
+            a.core_cells = static_cast<int>(r.integer(p + ".core_cells"));
+            if (!(a.core[0] >= a.start && a.core[1] <= a.end && a.core[1] > a.core[0]))
+                r.fail(p + ".core", "the window must lie in [start, end] = [" + exact_text(a.start) + ", " +
+                                        exact_text(a.end) + "] with to > from, got [" + exact_text(a.core[0]) + ", " +
+                                        exact_text(a.core[1]) + "]");
+            if (!(a.ratio >= 1.0))
+                r.fail(p + ".ratio",
+                       "clustered cells grow away from the window: ratio >= 1, got " + exact_text(a.ratio));
+            a.cells =
+                static_cast<int>(clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio).size()) -
+                1;
         } else {
-            a.start = number(p + ".start");
-            a.end = number(p + ".end");
-            if (!(a.end > a.start))
-                fail(p + ".end",
-                     "must be greater than " + p + ".start (" + fmt(a.start) + "), got " + fmt(a.end));
-            if (a.spacing == "clustered") {
-                a.core = vector2(p + ".core");
-                a.core_cells = static_cast<int>(integer(p + ".core_cells"));
-                if (!(a.core[0] >= a.start && a.core[1] <= a.end && a.core[1] > a.core[0]))
-                    fail(p + ".core", "the window must lie in [start, end] = [" + fmt(a.start) + ", " + fmt(a.end) +
-                                          "] with to > from, got [" + fmt(a.core[0]) + ", " + fmt(a.core[1]) + "]");
-                if (!(a.ratio >= 1.0)) fail(p + ".ratio", "clustered cells grow away from the window: ratio >= 1, got " + fmt(a.ratio));
-                a.cells = static_cast<int>(clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio).size()) - 1;
-            } else {
-                a.cells = static_cast<int>(integer(p + ".cells"));
+            a.cells = static_cast<int>(r.integer(p + ".cells"));
+        }
+    }
+}
+
+void read_boundary(const CaseReader& r, int s, BoundaryConfig& b) {
+    const std::string side(kSideNames[s]), p = "boundaries." + side;
+    b.type = r.choice<BoundaryType>(p + ".type", {{"wall", BoundaryType::wall},
+                                                  {"slip", BoundaryType::slip},
+                                                  {"inflow", BoundaryType::inflow},
+                                                  {"outflow", BoundaryType::outflow},
+                                                  {"periodic", BoundaryType::periodic}});
+    b.velocity = r.vector2(p + ".velocity");
+    b.profile = r.choice<InflowProfile>(p + ".profile",
+                                        {{"uniform", InflowProfile::uniform}, {"parabolic", InflowProfile::parabolic}});
+    b.outflow = r.choice<OutflowKind>(
+        p + ".kind", {{"convective", OutflowKind::convective}, {"zero_stress", OutflowKind::zero_stress}});
+    if (r.present(p + ".peak")) b.peak = r.number(p + ".peak");
+    if (b.type == BoundaryType::inflow && b.profile == InflowProfile::parabolic && r.present(p + ".velocity"))
+        r.fail(p + ".velocity", "not used with profile: parabolic (the peak sets the inflow)");
+
+    const int normal = s < 2 ? 0 : 1;               // velocity component normal to this side
+    const double inward = s % 2 == 0 ? 1.0 : -1.0;  // sign of that component for flow into the domain
+    const std::string component = "velocity[" + std::to_string(normal) + "]";
+    if (b.type == BoundaryType::wall && b.velocity[normal] != 0.0)
+        r.fail(p + ".velocity", "a wall moves along itself: the normal component " + component + " must be 0 on the " +
+                                    side + " side, got " + exact_text(b.velocity[normal]));
+    if (b.type == BoundaryType::inflow && b.profile == InflowProfile::uniform) {
+        if (!r.present(p + ".velocity"))
+            r.fail(p + ".velocity",
+                   "missing required key (an inflow with profile: uniform needs its velocity; or "
+                   "use profile: parabolic with a peak)");
+        if (!(inward * b.velocity[normal] > 0.0))
+            r.fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " + component +
+                                        " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
+                                        exact_text(b.velocity[normal]));
+    }
+}
+
+void read_ibm(const CaseReader& r, IbmConfig& m) {
+    m.kernel = r.choice<DeltaKernel>("numerics.ibm.kernel",
+                                     {{"roma3", DeltaKernel::roma3}, {"peskin4", DeltaKernel::peskin4}});
+    m.forcing_iterations = static_cast<int>(r.integer("numerics.ibm.forcing_iterations"));
+    m.marker_spacing = r.number("numerics.ibm.marker_spacing");
+    m.retraction = r.number("numerics.ibm.retraction");
+    m.stress_probes = r.vector2("numerics.ibm.stress_probes");
+    m.virtual_mass = r.number("numerics.ibm.virtual_mass");
+    if (!(m.stress_probes[1] > m.stress_probes[0]))
+        r.fail("numerics.ibm.stress_probes", "the second distance must be greater than the first, got [" +
+                                                 exact_text(m.stress_probes[0]) + ", " +
+                                                 exact_text(m.stress_probes[1]) + "]");
+}
+
+void read_bodies(const CaseReader& r, CaseConfig& c) {
+    constexpr double deg = 3.14159265358979323846 / 180.0;
+    for (const std::string& p : r.instances("bodies.<body>")) {
+        BodyConfig b;
+        b.name = p.substr(p.rfind('.') + 1);
+        b.shape = r.choice<BodyShape>(p + ".shape", {{"circle", BodyShape::circle},
+                                                     {"rectangle", BodyShape::rectangle},
+                                                     {"polygon", BodyShape::polygon},
+                                                     {"plane", BodyShape::plane},
+                                                     {"segment", BodyShape::segment}});
+        const bool closed =
+            b.shape == BodyShape::circle || b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon;
+        std::vector<std::array<double, 2>> extent;  // points that must lie in the domain
+        const std::string where_key = p + (b.shape == BodyShape::plane     ? ".point"
+                                           : b.shape == BodyShape::segment ? ".from"
+                                           : b.shape == BodyShape::polygon ? ".vertices"
+                                                                           : ".centre");
+        double height = 0.0;
+        if (b.shape == BodyShape::circle || b.shape == BodyShape::rectangle) b.centre = r.vector2(p + ".centre");
+        if (b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon || b.shape == BodyShape::plane)
+            b.angle = r.number(p + ".angle") * deg;
+        switch (b.shape) {
+            case BodyShape::circle: {
+                b.diameter = r.number(p + ".diameter");
+                const double radius = 0.5 * b.diameter;
+                extent = {{b.centre[0] - radius, b.centre[1] - radius}, {b.centre[0] + radius, b.centre[1] + radius}};
+                height = b.diameter;
+                break;
             }
-        }
-    }
-
-    void read_boundary(int s, BoundaryConfig& b) const {
-        const std::string side(kSideNames[s]), p = "boundaries." + side;
-        b.type = to_enum<BoundaryType>(p + ".type", choice(p + ".type"),
-                                       {{"wall", BoundaryType::wall},
-                                        {"slip", BoundaryType::slip},
-                                        {"inflow", BoundaryType::inflow},
-                                        {"outflow", BoundaryType::outflow},
-                                        {"periodic", BoundaryType::periodic}});
-        b.velocity = vector2(p + ".velocity");
-        b.profile = to_enum<InflowProfile>(
-            p + ".profile", choice(p + ".profile"),
-            {{"uniform", InflowProfile::uniform}, {"parabolic", InflowProfile::parabolic}});
-        b.outflow = to_enum<OutflowKind>(
-            p + ".kind", choice(p + ".kind"),
-            {{"convective", OutflowKind::convective}, {"zero_stress", OutflowKind::zero_stress}});
-        if (present(p + ".peak")) b.peak = number(p + ".peak");
-        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::parabolic &&
-            present(p + ".velocity"))
-            fail(p + ".velocity", "not used with profile: parabolic (the peak sets the inflow)");
-
-        const int normal = s < 2 ? 0 : 1;               // velocity component normal to this side
-        const double inward = s % 2 == 0 ? 1.0 : -1.0;  // sign of that component for flow into the domain
-        const std::string component = "velocity[" + std::to_string(normal) + "]";
-        if (b.type == BoundaryType::wall && b.velocity[normal] != 0.0)
-            fail(p + ".velocity", "a wall moves along itself: the normal component " + component +
-                                      " must be 0 on the " + side + " side, got " + fmt(b.velocity[normal]));
-        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::uniform) {
-            if (!present(p + ".velocity"))
-                fail(p + ".velocity",
-                     "missing required key (an inflow with profile: uniform needs its velocity; or "
-                     "use profile: parabolic with a peak)");
-            if (!(inward * b.velocity[normal] > 0.0))
-                fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " +
-                                          component + " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
-                                          fmt(b.velocity[normal]));
-        }
-    }
-
-    void read_ibm(IbmConfig& m) const {
-        m.kernel = to_enum<DeltaKernel>("numerics.ibm.kernel", choice("numerics.ibm.kernel"),
-                                        {{"roma3", DeltaKernel::roma3}, {"peskin4", DeltaKernel::peskin4}});
-        m.forcing_iterations = static_cast<int>(integer("numerics.ibm.forcing_iterations"));
-        m.marker_spacing = number("numerics.ibm.marker_spacing");
-        m.retraction = number("numerics.ibm.retraction");
-        m.stress_probes = vector2("numerics.ibm.stress_probes");
-        m.virtual_mass = number("numerics.ibm.virtual_mass");
-        if (!(m.stress_probes[1] > m.stress_probes[0]))
-            fail("numerics.ibm.stress_probes", "the second distance must be greater than the first, got [" +
-                                                   fmt(m.stress_probes[0]) + ", " + fmt(m.stress_probes[1]) + "]");
-    }
-
-    void read_bodies(CaseConfig& c) const {
-        constexpr double deg = 3.14159265358979323846 / 180.0;
-        for (const std::string& p : instances("bodies.<body>")) {
-            BodyConfig b;
-            b.name = std::string(leaf_of(p));
-            b.shape = to_enum<BodyShape>(p + ".shape", choice(p + ".shape"),
-                                         {{"circle", BodyShape::circle},
-                                          {"rectangle", BodyShape::rectangle},
-                                          {"polygon", BodyShape::polygon},
-                                          {"plane", BodyShape::plane},
-                                          {"segment", BodyShape::segment}});
-            const bool closed = b.shape == BodyShape::circle || b.shape == BodyShape::rectangle ||
-                                b.shape == BodyShape::polygon;
-            std::vector<std::array<double, 2>> extent;  // points that must lie in the domain
-            const std::string where_key = p + (b.shape == BodyShape::plane     ? ".point"
-                                               : b.shape == BodyShape::segment ? ".from"
-                                               : b.shape == BodyShape::polygon ? ".vertices"
-                                                                               : ".centre");
-            double height = 0.0;
-            if (b.shape == BodyShape::circle || b.shape == BodyShape::rectangle) b.centre = vector2(p + ".centre");
-            if (b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon || b.shape == BodyShape::plane)
-                b.angle = number(p + ".angle") * deg;
-            switch (b.shape) {
-                case BodyShape::circle: {
-                    b.diameter = number(p + ".diameter");
-                    const double r = 0.5 * b.diameter;
-                    extent = {{b.centre[0] - r, b.centre[1] - r}, {b.centre[0] + r, b.centre[1] + r}};
-                    height = b.diameter;
-                    break;
-                }
-                case BodyShape::rectangle: {
-                    b.size = vector2(p + ".size");
-                    const double cs = std::cos(b.angle), sn = std::sin(b.angle);
-                    double ymin = 1e300, ymax = -1e300;
-                    for (const double sx : {-0.5, 0.5})
-                        for (const double sy : {-0.5, 0.5}) {
-                            const double x = sx * b.size[0], y = sy * b.size[1];
-                            extent.push_back({b.centre[0] + cs * x - sn * y, b.centre[1] + sn * x + cs * y});
-                            ymin = std::min(ymin, extent.back()[1]);
-                            ymax = std::max(ymax, extent.back()[1]);
-                        }
-                    height = ymax - ymin;
-                    break;
-                }
-                case BodyShape::polygon: {
-                    b.vertices = point_list(p + ".vertices");
-                    if (b.vertices.size() < 3)
-                        fail(p + ".vertices", "a polygon needs at least 3 corners, got " +
-                                                  std::to_string(b.vertices.size()));
-                    double a2 = 0.0, ymin = 1e300, ymax = -1e300;
-                    for (std::size_t k = 0; k < b.vertices.size(); ++k) {
-                        const auto& v = b.vertices[k];
-                        const auto& w = b.vertices[(k + 1) % b.vertices.size()];
-                        a2 += v[0] * w[1] - v[1] * w[0];
-                        ymin = std::min(ymin, v[1]);
-                        ymax = std::max(ymax, v[1]);
+            case BodyShape::rectangle: {
+                b.size = r.vector2(p + ".size");
+                const double cs = std::cos(b.angle), sn = std::sin(b.angle);
+                double ymin = 1e300, ymax = -1e300;
+                for (const double sx : {-0.5, 0.5})
+                    for (const double sy : {-0.5, 0.5}) {
+                        const double x = sx * b.size[0], y = sy * b.size[1];
+                        extent.push_back({b.centre[0] + cs * x - sn * y, b.centre[1] + sn * x + cs * y});
+                        ymin = std::min(ymin, extent.back()[1]);
+                        ymax = std::max(ymax, extent.back()[1]);
                     }
-                    if (std::abs(a2) < 1e-14) fail(p + ".vertices", "the corners enclose no area");
-                    extent = b.vertices;  // the rotation about the centroid is checked by the solver
-                    height = ymax - ymin;
-                    break;
+                height = ymax - ymin;
+                break;
+            }
+            case BodyShape::polygon: {
+                b.vertices = r.point_list(p + ".vertices");
+                if (b.vertices.size() < 3)
+                    r.fail(p + ".vertices",
+                           "a polygon needs at least 3 corners, got " + std::to_string(b.vertices.size()));
+                double a2 = 0.0, ymin = 1e300, ymax = -1e300;
+                for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+                    const auto& v = b.vertices[k];
+                    const auto& w = b.vertices[(k + 1) % b.vertices.size()];
+                    a2 += v[0] * w[1] - v[1] * w[0];
+                    ymin = std::min(ymin, v[1]);
+                    ymax = std::max(ymax, v[1]);
                 }
-                case BodyShape::plane:
-                    b.point = vector2(p + ".point");
-                    extent = {b.point};
-                    break;
-                case BodyShape::segment:
-                    b.from = vector2(p + ".from");
-                    b.to = vector2(p + ".to");
-                    if (b.from == b.to) fail(p + ".to", "the two ends of the segment coincide");
-                    extent = {b.from, b.to};
-                    height = std::hypot(b.to[0] - b.from[0], b.to[1] - b.from[1]);
-                    break;
+                if (std::abs(a2) < 1e-14) r.fail(p + ".vertices", "the corners enclose no area");
+                extent = b.vertices;  // the rotation about the centroid is checked by the solver
+                height = ymax - ymin;
+                break;
             }
-            for (const auto& [x, y] : extent)
-                if (x < c.x.start || x > c.x.end || y < c.y.start || y > c.y.end)
-                    fail(where_key, "the body reaches outside the domain [" + fmt(c.x.start) + ", " + fmt(c.x.end) +
-                                        "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]: point [" + fmt(x) +
-                                        ", " + fmt(y) + "]");
-
-            const std::string m = p + ".motion";
-            b.motion.type = to_enum<MotionType>(m + ".type", choice(m + ".type"),
-                                                {{"fixed", MotionType::fixed},
-                                                 {"constant_velocity", MotionType::constant_velocity},
-                                                 {"oscillation", MotionType::oscillation},
-                                                 {"uniform_acceleration", MotionType::uniform_acceleration},
-                                                 {"free", MotionType::free}});
-            if (!closed && b.motion.type != MotionType::fixed)
-                fail(m + ".type", "planes and segments are fixed; only circles, rectangles and polygons move");
-            b.motion.velocity = vector2(m + ".velocity");
-            b.motion.angular_velocity = number(m + ".angular_velocity");
-            b.motion.amplitude = vector2(m + ".amplitude");
-            b.motion.angular_amplitude = number(m + ".angular_amplitude") * deg;
-            if (present(m + ".frequency")) b.motion.frequency = number(m + ".frequency");
-            b.motion.phase = number(m + ".phase") * deg;
-            b.motion.acceleration = vector2(m + ".acceleration");
-            b.motion.angular_acceleration = number(m + ".angular_acceleration");
-            if (b.motion.type == MotionType::free) {
-                if (!present(p + ".density")) fail(p + ".density", "a free body needs its density");
-                b.density = number(p + ".density");
-                b.motion.locked = {boolean(m + ".lock_x"), boolean(m + ".lock_y"), boolean(m + ".lock_rotation")};
-            } else if (present(p + ".density")) {
-                fail(p + ".density", "only free bodies (motion type `free`) have a density");
-            }
-
-            b.reference_velocity = number(p + ".reference.velocity");
-            if (present(p + ".reference.length")) b.reference_length = number(p + ".reference.length");
-            else if (b.shape == BodyShape::plane) b.reference_length = std::hypot(c.x.end - c.x.start, c.y.end - c.y.start);
-            else b.reference_length = height;
-            if (!(b.reference_length > 0.0))
-                fail(p + ".reference.length", "the default (the body's extent across x) is 0: give a length");
-            c.bodies.push_back(std::move(b));
+            case BodyShape::plane:
+                b.point = r.vector2(p + ".point");
+                extent = {b.point};
+                break;
+            case BodyShape::segment:
+                b.from = r.vector2(p + ".from");
+                b.to = r.vector2(p + ".to");
+                if (b.from == b.to) r.fail(p + ".to", "the two ends of the segment coincide");
+                extent = {b.from, b.to};
+                height = std::hypot(b.to[0] - b.from[0], b.to[1] - b.from[1]);
+                break;
         }
-    }
+        for (const auto& [x, y] : extent)
+            if (x < c.x.start || x > c.x.end || y < c.y.start || y > c.y.end)
+                r.fail(where_key, "the body reaches outside the domain [" + exact_text(c.x.start) + ", " +
+                                      exact_text(c.x.end) + "] x [" + exact_text(c.y.start) + ", " +
+                                      exact_text(c.y.end) + "]: point [" + exact_text(x) + ", " + exact_text(y) + "]");
 
-    void check_boundaries(const CaseConfig& c) const {
-        const auto type_of = [&](int s) { return c.boundary[s].type; };
-        for (int s = 0; s < 4; ++s) {
-            const int opposite = s ^ 1;  // left <-> right, bottom <-> top
-            if (type_of(s) == BoundaryType::periodic && type_of(opposite) != BoundaryType::periodic)
-                fail("boundaries." + std::string(kSideNames[s]) + ".type",
-                     "periodic sides come in pairs: boundaries." + std::string(kSideNames[opposite]) +
-                         ".type must be periodic too, got '" +
-                         choice("boundaries." + std::string(kSideNames[opposite]) + ".type") + "'");
+        const std::string m = p + ".motion";
+        b.motion.type = r.choice<MotionType>(m + ".type", {{"fixed", MotionType::fixed},
+                                                           {"constant_velocity", MotionType::constant_velocity},
+                                                           {"oscillation", MotionType::oscillation},
+                                                           {"uniform_acceleration", MotionType::uniform_acceleration},
+                                                           {"free", MotionType::free}});
+        if (!closed && b.motion.type != MotionType::fixed)
+            r.fail(m + ".type", "planes and segments are fixed; only circles, rectangles and polygons move");
+        b.motion.velocity = r.vector2(m + ".velocity");
+        b.motion.angular_velocity = r.number(m + ".angular_velocity");
+        b.motion.amplitude = r.vector2(m + ".amplitude");
+        b.motion.angular_amplitude = r.number(m + ".angular_amplitude") * deg;
+        if (r.present(m + ".frequency")) b.motion.frequency = r.number(m + ".frequency");
+        b.motion.phase = r.number(m + ".phase") * deg;
+        b.motion.acceleration = r.vector2(m + ".acceleration");
+        b.motion.angular_acceleration = r.number(m + ".angular_acceleration");
+        if (b.motion.type == MotionType::free) {
+            if (!r.present(p + ".density")) r.fail(p + ".density", "a free body needs its density");
+            b.density = r.number(p + ".density");
+            b.motion.locked = {r.boolean(m + ".lock_x"), r.boolean(m + ".lock_y"), r.boolean(m + ".lock_rotation")};
+        } else if (r.present(p + ".density")) {
+            r.fail(p + ".density", "only free bodies (motion type `free`) have a density");
         }
-        bool outflow = false;
-        for (int s = 0; s < 4; ++s) outflow = outflow || type_of(s) == BoundaryType::outflow;
-        for (int s = 0; s < 4; ++s)
-            if (type_of(s) == BoundaryType::inflow && !outflow)
-                fail("boundaries." + std::string(kSideNames[s]) + ".type",
-                     "an inflow needs an outflow side somewhere: with none, the mass let in cannot leave");
-    }
 
-    std::string file_, default_name_;
-    std::map<std::string, Entry, std::less<>> entries_;  // full key path -> value, as given
-};
+        b.reference_velocity = r.number(p + ".reference.velocity");
+        if (r.present(p + ".reference.length"))
+            b.reference_length = r.number(p + ".reference.length");
+        else if (b.shape == BodyShape::plane)
+            b.reference_length = std::hypot(c.x.end - c.x.start, c.y.end - c.y.start);
+        else
+            b.reference_length = height;
+        if (!(b.reference_length > 0.0))
+            r.fail(p + ".reference.length", "the default (the body's extent across x) is 0: give a length");
+        c.bodies.push_back(std::move(b));
+    }
+}
+
+void check_boundaries(const CaseReader& r, const CaseConfig& c) {
+    const auto type_of = [&](int s) { return c.boundary[s].type; };
+    for (int s = 0; s < 4; ++s) {
+        const int opposite = s ^ 1;  // left <-> right, bottom <-> top
+        if (type_of(s) == BoundaryType::periodic && type_of(opposite) != BoundaryType::periodic)
+            r.fail("boundaries." + std::string(kSideNames[s]) + ".type",
+                   "periodic sides come in pairs: boundaries." + std::string(kSideNames[opposite]) +
+                       ".type must be periodic too, got '" +
+                       r.choice("boundaries." + std::string(kSideNames[opposite]) + ".type") + "'");
+    }
+    bool outflow = false;
+    for (int s = 0; s < 4; ++s) outflow = outflow || type_of(s) == BoundaryType::outflow;
+    for (int s = 0; s < 4; ++s)
+        if (type_of(s) == BoundaryType::inflow && !outflow)
+            r.fail("boundaries." + std::string(kSideNames[s]) + ".type",
+                   "an inflow needs an outflow side somewhere: with none, the mass let in cannot leave");
+}
+
+CaseConfig build(const CaseReader& r, const std::string& default_name) {
+    r.check_presence();
+    CaseConfig c;
+
+    c.name = r.present("name") ? r.string("name") : default_name;
+    if (c.name.empty()) r.fail("name", "must not be empty");
+    if (c.name.find_first_of("/\\") != std::string::npos)
+        r.fail("name", "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
+
+    read_axis(r, "domain.x", c.x);
+    read_axis(r, "domain.y", c.y);
+    c.depth = r.number("domain.depth");
+
+    c.density = r.number("fluid.density");
+    c.viscosity = r.number("fluid.viscosity");
+    c.body_force = r.vector2("fluid.body_force");
+    c.gravity = r.vector2("gravity");
+    c.contact.law = r.choice<ReboundLaw>(
+        "contact.law", {{"lumped", ReboundLaw::lumped}, {"impulse", ReboundLaw::impulse}, {"soft", ReboundLaw::soft}});
+    c.contact.normal_restitution = r.number("contact.normal_restitution");
+    c.contact.tangential_restitution = r.number("contact.tangential_restitution");
+    c.contact.rest_speed = r.number("contact.rest_speed");
+    c.contact.friction = r.number("contact.friction");
+    c.contact.distance = r.number("contact.distance");
+    c.contact.duration = r.number("contact.duration");
+    c.lumped.drag_coefficient = r.number("lumped.drag_coefficient");
+    c.lumped.added_mass_coefficient = r.number("lumped.added_mass_coefficient");
+
+    c.turbulence.model = r.choice<TurbulenceModelType>(
+        "turbulence.model", {{"laminar", TurbulenceModelType::laminar}, {"k_epsilon", TurbulenceModelType::k_epsilon}});
+    c.turbulence.intensity = r.number("turbulence.intensity");
+    c.turbulence.length_scale = r.number("turbulence.length_scale");
+    c.turbulence.velocity_scale = r.number("turbulence.velocity_scale");
+    c.turbulence.production_limit = r.number("turbulence.production_limit");
+    c.turbulence.kato_launder = r.choice("turbulence.production") == "kato_launder";
+    c.turbulence.image_distance = r.number("turbulence.image_distance");
+
+    c.initial = r.choice<InitialCondition>(
+        "initial.type", {{"uniform", InitialCondition::uniform}, {"taylor_green", InitialCondition::taylor_green}});
+    c.initial_velocity = r.vector2("initial.velocity");
+    c.taylor_green_amplitude = r.number("initial.amplitude");
+    c.initial_perturbation = r.number("initial.perturbation");
+
+    for (int s = 0; s < 4; ++s) read_boundary(r, s, c.boundary[s]);
+    check_boundaries(r, c);
+
+    read_ibm(r, c.ibm);
+    read_bodies(r, c);
+
+    c.convection = r.choice<ConvectionScheme>("numerics.convection", {{"central", ConvectionScheme::central},
+                                                                      {"van_leer", ConvectionScheme::van_leer},
+                                                                      {"koren", ConvectionScheme::koren}});
+    c.cfl = r.number("numerics.cfl");
+    c.diffusion_number = r.number("numerics.diffusion_number");
+    c.diffusion = r.choice<DiffusionScheme>("numerics.diffusion", {{"explicit", DiffusionScheme::explicit_ab2},
+                                                                   {"implicit", DiffusionScheme::implicit_euler},
+                                                                   {"auto", DiffusionScheme::automatic}});
+    c.fixed_dt = r.number_or_auto("numerics.dt");
+    c.max_dt = r.number("numerics.max_dt");
+    if (c.fixed_dt && *c.fixed_dt > c.max_dt)
+        r.fail("numerics.dt",
+               "must not exceed numerics.max_dt (" + exact_text(c.max_dt) + "), got " + exact_text(*c.fixed_dt));
+    c.poisson_tolerance = r.number("numerics.poisson.tolerance");
+    c.poisson_max_iterations = static_cast<int>(r.integer("numerics.poisson.max_iterations"));
+    c.divergence_limit = r.number("numerics.divergence_limit");
+
+    c.end_time = r.number("time.end");
+    c.max_steps = r.integer("time.max_steps");
+
+    c.ranks = r.integer_vector2("parallel.ranks");
+
+    c.field_interval = r.number("output.fields_interval");
+    c.checkpoint_interval = r.number("output.checkpoint_interval");
+    c.checkpoints_kept = static_cast<int>(r.integer("output.checkpoints_kept"));
+    c.timeseries_every = static_cast<int>(r.integer("output.timeseries_every"));
+    c.progress_interval = r.number("output.progress_interval");
+    c.probes = r.point_list("output.probes");
+    for (std::size_t i = 0; i < c.probes.size(); ++i) {
+        const auto [px, py] = c.probes[i];
+        if (px < c.x.start || px > c.x.end || py < c.y.start || py > c.y.end)
+            r.fail(CaseReader::indexed("output.probes", i),
+                   "point [" + exact_text(px) + ", " + exact_text(py) + "] lies outside the domain [" +
+                       exact_text(c.x.start) + ", " + exact_text(c.x.end) + "] x [" + exact_text(c.y.start) + ", " +
+                       exact_text(c.y.end) + "]");
+    }
+    c.plots = r.boolean("output.plots");
+    return c;
+}
 
 }  // namespace
 
@@ -1522,16 +1009,16 @@ const std::vector<CaseKey>& case_schema() {
 }
 
 CaseConfig parse_case(const YAML::Node& root) {
-    Reader reader("", "case");
+    CaseReader reader(case_schema(), case_placeholders());
     reader.add_document(root);
-    return reader.build();
+    return build(reader, "case");
 }
 
 CaseConfig parse_case_text(const std::string& yaml_text, const std::vector<std::string>& overrides) {
-    Reader reader("", "case");
-    reader.add_document(load_yaml(yaml_text, ""));
+    CaseReader reader(case_schema(), case_placeholders());
+    reader.add_text(yaml_text);
     for (const std::string& o : overrides) reader.add_override(o);
-    return reader.build();
+    return build(reader, "case");
 }
 
 CaseConfig load_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
@@ -1543,87 +1030,12 @@ CaseConfig load_case(const std::filesystem::path& file, const std::vector<std::s
     std::stringstream text;
     text << in.rdbuf();
     if (!in) throw CaseError(name + ": cannot read the case file");
-    Reader reader(name, file.stem().string());
-    reader.add_document(load_yaml(text.str(), name));
+    CaseReader reader(case_schema(), case_placeholders(), name);
+    reader.add_text(text.str());
     for (const std::string& o : overrides) reader.add_override(o);
-    return reader.build();
+    return build(reader, file.stem().string());
 }
 
-std::string schema_markdown() {
-    const auto cell = [](std::string_view text) {
-        std::string s;
-        for (char ch : text) s += ch == '|' ? std::string("\\|") : std::string(1, ch);
-        return s;
-    };
-    const auto code = [](std::string_view text) { return "`" + std::string(text) + "`"; };
-    std::string md =
-        "| Key | Type | Default | Allowed | Units | Meaning |\n"
-        "|-----|------|---------|---------|-------|---------|\n";
-    for (const CaseKey& k : case_schema()) {
-        std::string type, allowed = range_text(k, false), fallback;
-        switch (k.type) {
-            case KeyType::section:
-                type = "section";
-                break;
-            case KeyType::string:
-                type = "text";
-                break;
-            case KeyType::number:
-                type = "number";
-                break;
-            case KeyType::integer:
-                type = "integer";
-                break;
-            case KeyType::boolean:
-                type = "true/false";
-                break;
-            case KeyType::choice:
-                type = "choice";
-                break;
-            case KeyType::vector2:
-                type = "[number, number]";
-                break;
-            case KeyType::integer_vector2:
-                type = "[integer, integer]";
-                break;
-            case KeyType::number_list:
-                type = "list of numbers";
-                break;
-            case KeyType::point_list:
-                type = "list of [x, y]";
-                break;
-            case KeyType::number_or_auto:
-                type = "`auto` or number";
-                break;
-        }
-        if (k.type == KeyType::choice) {
-            for (std::string_view c : k.choices) allowed += (allowed.empty() ? "" : ", ") + code(c);
-        }
-        if ((k.type == KeyType::vector2 || k.type == KeyType::integer_vector2) && !allowed.empty())
-            allowed = "each " + allowed;
-        if (k.type == KeyType::number_or_auto) allowed = code("auto") + " or " + allowed;
-
-        std::string dflt;
-        if (k.required)
-            dflt = "**required**";
-        else if (!k.default_doc.empty())
-            dflt = std::string(k.default_doc);
-        else if (!k.default_value.empty())
-            dflt = code(k.default_value);
-
-        std::string meaning(k.meaning);
-        if (!k.when_key.empty()) {
-            // "Only with `spacing: tanh`." or "Only with `spacing: uniform`, `tanh` or `geometric`."
-            const auto& values = k.when_values;
-            std::string options = code(std::string(k.when_key) + ": " + std::string(values.front()));
-            for (std::size_t i = 1; i < values.size(); ++i)
-                options += (i + 1 == values.size() ? " or " : ", ") + code(values[i]);
-            meaning += " Only with " + options + ".";
-        }
-        md += "| " + code(k.path) + " | " + cell(type) + " | " + cell(dflt) + " | " + cell(allowed) + " | " +
-              cell(k.units) + " | " + cell(meaning) + " |\n";
-    }
-    return md;
-}
+std::string schema_markdown() { return markdown_table(case_schema()); }
 
 }  // namespace chute
