@@ -5,7 +5,7 @@
 // x_c is the centre of area of a closed outline; planes and segments are static and live in the world frame.
 #include <string>
 
-#include "case_config.hpp"
+#include "body_config.hpp"
 #include "outline.hpp"
 
 namespace chute {

@@ -4,7 +4,9 @@
 #include <vector>
 
 #include "body.hpp"
-#include "case_config.hpp"
+#include "body_config.hpp"
+#include "contact_config.hpp"
+#include "flow_config.hpp"
 
 namespace chute {
 
@@ -24,6 +26,7 @@ Gap gap(const Outline& outline, const BodyState& s, const Obstacle& obstacle);
 
 // The static planes of a case a body can hit: its `plane` bodies and the domain sides of type wall or slip,
 // each moved out by contact.distance.
-std::vector<Obstacle> obstacles_of(const CaseConfig& config);
+std::vector<Obstacle> obstacles_of(const FlowConfig& flow, const std::vector<BodyConfig>& bodies,
+                                   const ContactConfig& contact);
 
 }  // namespace chute

@@ -9,7 +9,7 @@
 //           K = diag(1/m) + perp(r) perp(r)^T / I (locked degrees of freedom have 1/m = 0 or 1/I = 0).
 #include <string>
 
-#include "case_config.hpp"
+#include "contact_config.hpp"
 #include "rigid_body.hpp"
 
 namespace chute {

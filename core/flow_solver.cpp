@@ -20,7 +20,7 @@ Axis build_axis(const AxisConfig& c, bool periodic) {
     return Axis(uniform_lines(c.start, c.end, c.cells), periodic);
 }
 
-FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config) {
+FlowSolver::FlowSolver(const FlowConfig& config, MPI_Comm comm) : config_(config) {
     const bool px = config_.boundary[0].type == BoundaryType::periodic;
     const bool py = config_.boundary[2].type == BoundaryType::periodic;
     grid_ = std::make_unique<Grid>(build_axis(config_.x, px), build_axis(config_.y, py), comm, config_.ranks[0],

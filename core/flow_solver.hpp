@@ -21,8 +21,8 @@
 #include <memory>
 
 #include "boundary_conditions.hpp"
-#include "case_config.hpp"
 #include "field.hpp"
+#include "flow_config.hpp"
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"
 #include "poisson_solver.hpp"
@@ -40,7 +40,7 @@ struct StepStats {
 
 class FlowSolver {
 public:
-    FlowSolver(const CaseConfig& config, MPI_Comm comm);
+    FlowSolver(const FlowConfig& config, MPI_Comm comm);
 
     // Impose the initial condition of the case (uniform current or Taylor-Green vortex) at time 0.
     void set_initial_condition();
@@ -65,7 +65,7 @@ public:
     const EddyViscosity& eddy_viscosity() const { return eddy_; }
 
     const Grid& grid() const { return *grid_; }
-    const CaseConfig& config() const { return config_; }
+    const FlowConfig& config() const { return config_; }
     const Velocity& velocity() const { return vel_; }
     const Field2D& pressure() const { return p_; }
     double time() const { return time_; }
@@ -96,7 +96,7 @@ private:
     void pressure_increment_guess(double r);                          // phi <- r (p^n - p^{n-1})
     double poisson_residual_floor(double dt) const;                   // absolute tolerance of the solve
 
-    CaseConfig config_;
+    FlowConfig config_;
     std::unique_ptr<Grid> grid_;
     std::unique_ptr<HaloExchange> halo_;
     std::unique_ptr<BoundaryConditions> bc_;

@@ -8,7 +8,7 @@
 // fields on uniform grids).
 #include <cmath>
 
-#include "case_config.hpp"
+#include "ibm_config.hpp"
 
 namespace chute {
 

@@ -2,10 +2,6 @@
 
 namespace chute {
 
-ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
-    return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
-}
-
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings,
                                    std::vector<Body>& bodies)
     : grid_(grid), settings_(settings), bodies_(bodies), walls_(grid, bodies, settings.image_distance),

@@ -21,21 +21,20 @@
 #include <vector>
 
 #include "carrier.hpp"
-#include "case_config.hpp"
 #include "direct_forcing.hpp"
 #include "enclosed_momentum.hpp"
+#include "ibm_config.hpp"
 #include "immersed_wall.hpp"
 #include "surface_stress.hpp"
 
 namespace chute {
 
-// What the immersed boundary needs of a case.
+// What the immersed boundary needs of a case (run/case_settings.hpp gathers it).
 struct ImmersedBoundarySettings {
     IbmConfig ibm;
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
     double image_distance = 2.0;  // cells: where wall functions sample the flow (turbulence.image_distance)
 };
-ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& config);
 
 class ImmersedBoundary final : public Carrier {
 public:

@@ -5,10 +5,6 @@
 
 namespace chute {
 
-FreeBodySettings free_body_settings(const CaseConfig& c) {
-    return {c.contact, Vec2(c.gravity[0], c.gravity[1]), c.density, c.depth, c.ibm.virtual_mass, obstacles_of(c)};
-}
-
 FreeBodies::FreeBodies(const FreeBodySettings& settings, std::vector<Body>& bodies, Carrier& carrier)
     : settings_(settings), bodies_(bodies), carrier_(carrier), loads_(bodies.size()) {
     const Vec2 g = settings_.gravity;

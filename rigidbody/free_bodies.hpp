@@ -16,13 +16,13 @@
 #include <vector>
 
 #include "carrier.hpp"
-#include "case_config.hpp"
 #include "checkpoint.hpp"
+#include "contact_config.hpp"
 #include "impacts.hpp"
 
 namespace chute {
 
-// What free-body dynamics needs of a case.
+// What free-body dynamics needs of a case (run/case_settings.hpp gathers it).
 struct FreeBodySettings {
     ContactConfig contact;
     Vec2 gravity{0.0, -9.81};
@@ -30,7 +30,6 @@ struct FreeBodySettings {
     double virtual_mass = 1.0;  // C_V (numerics.ibm.virtual_mass)
     std::vector<Obstacle> obstacles;
 };
-FreeBodySettings free_body_settings(const CaseConfig& config);
 
 class FreeBodies {
 public:

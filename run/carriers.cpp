@@ -3,6 +3,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "case_settings.hpp"
 #include "immersed_boundary.hpp"
 
 namespace chute {

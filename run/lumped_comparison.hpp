@@ -7,6 +7,7 @@
 // velocity of the fluid.
 #include <filesystem>
 
+#include "case_config.hpp"
 #include "free_bodies.hpp"
 
 namespace chute {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "carriers.hpp"
+#include "case_settings.hpp"
 
 namespace chute {
 

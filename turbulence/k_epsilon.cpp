@@ -29,10 +29,6 @@ double velocity_scale(const KEpsilonSettings& c) {
 
 }  // namespace
 
-KEpsilonSettings k_epsilon_settings(const CaseConfig& c) {
-    return {c.turbulence, c.viscosity, c.diffusion_number, c.boundary, c.initial_velocity};
-}
-
 KEpsilon::KEpsilon(const KEpsilonSettings& settings, FlowSolver& flow, Carrier& carrier)
     : settings_(settings), flow_(flow), grid_(flow.grid()), carrier_(carrier), halo_(flow.grid()) {
     const TurbulenceConfig& config = settings_.model;

@@ -20,13 +20,14 @@
 #include <string>
 
 #include "carrier.hpp"
-#include "case_config.hpp"
+#include "flow_config.hpp"
 #include "flow_solver.hpp"
 #include "halo_exchange.hpp"
+#include "turbulence_config.hpp"
 
 namespace chute {
 
-// What the model needs of a case.
+// What the model needs of a case (run/case_settings.hpp gathers it).
 struct KEpsilonSettings {
     TurbulenceConfig model;
     double viscosity = 1e-6;
@@ -34,7 +35,6 @@ struct KEpsilonSettings {
     std::array<BoundaryConfig, 4> boundary;
     std::array<double, 2> initial_velocity{0.0, 0.0};
 };
-KEpsilonSettings k_epsilon_settings(const CaseConfig& config);
 
 class KEpsilon {
 public:

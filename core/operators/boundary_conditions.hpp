@@ -13,8 +13,8 @@
 // The pressure (projection) condition is Neumann on every side but a zero-stress outflow.
 #include <array>
 
-#include "case_config.hpp"
 #include "field.hpp"
+#include "flow_config.hpp"
 
 namespace chute {
 

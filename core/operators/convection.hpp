@@ -10,8 +10,8 @@
 //   van_leer, koren: upwind value plus a limited anti-diffusive correction (TVD, bounded; for high Re),
 //            phi_f = phi_U + 1/2 psi(r) (phi_D - phi_U),  r = (phi_U - phi_UU) / (phi_D - phi_U).
 // The v equation is the same with x and y exchanged.
-#include "case_config.hpp"
 #include "field.hpp"
+#include "flow_config.hpp"
 
 namespace chute {
 

@@ -1,12 +1,12 @@
 #pragma once
-// Face values of a transported quantity for the convection schemes of case_config.hpp:
+// Face values of a transported quantity for the convection schemes of flow_config.hpp:
 //   central:            linear interpolation;
 //   van_leer, koren:    upwind value plus a limited anti-diffusive correction (TVD, bounded),
 //                       phi_f = phi_U + 1/2 psi(r) (phi_D - phi_U),  r = (phi_U - phi_UU) / (phi_D - phi_U).
 // Shared by the momentum convection (convection.cpp) and the scalar transport of turbulence/.
 #include <algorithm>
 
-#include "case_config.hpp"
+#include "flow_config.hpp"
 
 namespace chute {
 

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "case_config.hpp"
 #include "flow_solver.hpp"
 
 using namespace chute;

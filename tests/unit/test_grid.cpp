@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "case_config.hpp"
 #include "diagnostics.hpp"
 #include "flow_solver.hpp"
 

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "boundary_conditions.hpp"
+#include "case_config.hpp"
 #include "flow_solver.hpp"
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"

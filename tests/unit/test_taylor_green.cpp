@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "case_config.hpp"
 #include "flow_solver.hpp"
 
 using namespace chute;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "case_settings.hpp"
 #include "diffusion.hpp"
 #include "flow_solver.hpp"
 #include "immersed_boundary.hpp"

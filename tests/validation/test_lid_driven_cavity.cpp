@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "case_config.hpp"
 #include "gather.hpp"
 #include "steady_state.hpp"
 

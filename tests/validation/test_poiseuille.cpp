@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "case_config.hpp"
 #include "steady_state.hpp"
 
 using namespace chute;

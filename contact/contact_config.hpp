@@ -1,0 +1,30 @@
+#pragma once
+// Contact's part of a case (docs/case-file.md, `contact`): the rebound law of an impact and its constants.
+// Plain data: read_contact() fills it (contact_keys.cpp, the schema's contact section).
+#include <vector>
+
+namespace chute {
+
+// Rebound laws at an impact (contact/rebound.hpp):
+//   lumped (RocFall's lumped mass, Turmel & Locat 2008): the centre's velocity, v_n' = -Rn v_n, v_t' = Rt v_t;
+//   impulse: the same coefficients on the contact point's velocity, by an impulse that also turns the body;
+//   soft: a spring-dashpot at the contact point over a finite contact time, sub-stepped inside the step.
+enum class ReboundLaw { lumped, impulse, soft };
+
+struct ContactConfig {
+    ReboundLaw law = ReboundLaw::lumped;
+    double normal_restitution = 0.8;      // Rn
+    double tangential_restitution = 0.8;  // Rt
+    double rest_speed = 0.01;             // m/s: a slower rebound leaves the body resting on the obstacle
+    double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
+    double distance = 0.0;                // m: impacts happen at this gap (0: at the surface)
+    double duration = 0.002;              // s: soft law, contact time of one impact
+};
+
+// The schema's contact section (io/case_reader.hpp) and its reading.
+struct CaseKey;
+class CaseReader;
+std::vector<CaseKey> contact_keys();
+ContactConfig read_contact(const CaseReader& reader);
+
+}  // namespace chute

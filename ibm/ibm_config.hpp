@@ -1,0 +1,27 @@
+#pragma once
+// The immersed boundary's part of a case (docs/case-file.md, `numerics.ibm`): the delta kernel, the forcing,
+// where the markers sit, how the surface stress is sampled, and the virtual mass of the free-body update.
+// Plain data: read_ibm() fills it (ibm_keys.cpp, the schema's numerics.ibm section).
+#include <array>
+#include <vector>
+
+namespace chute {
+
+enum class DeltaKernel { roma3, peskin4 };
+
+struct IbmConfig {
+    DeltaKernel kernel = DeltaKernel::roma3;
+    int forcing_iterations = 3;              // multi-direct forcing (Breugem 2012)
+    double marker_spacing = 1.0;             // in grid cells
+    double retraction = 0.3;                 // markers moved inwards by this many cells
+    std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
+    double virtual_mass = 1.0;               // C_V of the free-body update (Schwarz et al. 2015)
+};
+
+// The schema's numerics.ibm section (io/case_reader.hpp) and its reading (the second probe beyond the first).
+struct CaseKey;
+class CaseReader;
+std::vector<CaseKey> ibm_keys();
+IbmConfig read_ibm(const CaseReader& reader);
+
+}  // namespace chute

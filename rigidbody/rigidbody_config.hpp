@@ -1,0 +1,25 @@
+#pragma once
+// Rigid-body dynamics' part of a case (docs/case-file.md): the gravity that moves free bodies (`gravity`), and
+// the constants of the lumped trajectory models written beside a run with free bodies (`lumped`). Plain data:
+// read_gravity() and read_lumped() fill it (rigidbody_keys.cpp, the schema's gravity and lumped sections).
+#include <array>
+#include <vector>
+
+namespace chute {
+
+// The lumped trajectory models a run with free bodies writes beside its CFD result (rigidbody/lumped_model):
+// Beranger et al. (1998) with these constants (Turmel & Locat 2008: C_D 2.0 for the block, C_a 0.5), and dry.
+struct LumpedConfig {
+    double drag_coefficient = 2.0;
+    double added_mass_coefficient = 0.5;
+};
+
+// The schema's gravity and lumped sections (io/case_reader.hpp) and their reading. Gravity is here, not in
+// the flow's section, because only the free bodies and the lumped models feel it: the pressure is dynamic.
+struct CaseKey;
+class CaseReader;
+std::vector<CaseKey> rigidbody_keys();
+std::array<double, 2> read_gravity(const CaseReader& reader);  // m/s^2
+LumpedConfig read_lumped(const CaseReader& reader);
+
+}  // namespace chute

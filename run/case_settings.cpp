@@ -1,0 +1,18 @@
+#include "case_settings.hpp"
+
+namespace chute {
+
+ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
+    return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
+}
+
+FreeBodySettings free_body_settings(const CaseConfig& c) {
+    return {c.contact, Vec2(c.gravity[0], c.gravity[1]), c.density, c.depth, c.ibm.virtual_mass,
+            obstacles_of(c, c.bodies, c.contact)};
+}
+
+KEpsilonSettings k_epsilon_settings(const CaseConfig& c) {
+    return {c.turbulence, c.viscosity, c.diffusion_number, c.boundary, c.initial_velocity};
+}
+
+}  // namespace chute
