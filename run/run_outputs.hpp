@@ -1,5 +1,5 @@
 #pragma once
-// What a run writes, and when (DESIGN.md, "Outputs a user gets from one run"):
+// What a run writes, and when (docs/design.md, "Outputs a user gets from one run"):
 //   every `timeseries_every` steps   timeseries.csv (step, dt, energy, divergence, solver iterations, probes),
 //                                    body_<name>.csv (kinematics and the force record), the trajectory summary
 //   at each impact                   contacts.csv

@@ -1,5 +1,5 @@
 #pragma once
-// One time step of the model, in the order of DESIGN.md's data flow:
+// One time step of the model, in the order of docs/design.md's data flow:
 //
 //   momentum prediction u*            (FlowSolver::predict: advection, diffusion with nu + nu_t)
 //   bodies to t^{n+1}, imposed on u*  (free bodies predicted, prescribed ones placed; the carrier's forcing)

@@ -1,5 +1,5 @@
 // Rigid-body motion, contact and the lumped models without fluid, against closed forms
-// (../shared/VALIDATION.md, "Free fall in air" and "Contact": dry runs match the analytic ballistic trajectory
+// (docs/validation-targets.md, "Free fall in air" and "Contact": dry runs match the analytic ballistic trajectory
 // and rebound to 1e-6 relative). Held accelerations and impacts located by bisection make them exact to
 // round-off, so the tests ask for 1e-9 relative, well inside the 1e-6.
 #include <gtest/gtest.h>

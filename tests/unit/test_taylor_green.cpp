@@ -1,4 +1,4 @@
-// Taylor-Green vortex on the periodic square [-pi, pi]^2 (exact solution in ../shared/VALIDATION.md):
+// Taylor-Green vortex on the periodic square [-pi, pi]^2 (exact solution in docs/validation-targets.md):
 //   u = V0 cos x sin y e^{-2 nu t},  v = -V0 sin x cos y e^{-2 nu t}
 // The scheme is second order in space (central convection, MAC grid) and time (AB2 + projection).
 #include <gtest/gtest.h>

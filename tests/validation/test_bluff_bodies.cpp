@@ -1,5 +1,5 @@
 // Bluff bodies in uniform flow and an oscillating cylinder: the slow immersed-boundary validation cases
-// (labels validation;slow; run with `scripts/test.sh -L slow`). Reference bands: ../shared/VALIDATION.md.
+// (labels validation;slow; run with `scripts/test.sh -L slow`). Reference bands: docs/validation-targets.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>
