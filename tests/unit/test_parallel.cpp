@@ -198,7 +198,7 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
         Model model(cc, comm);
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(model, 0.002);
+            take_step(model, 0.002);
             f = measure_forces(model);
         }
         const BodyForces& b = f[0];
@@ -247,7 +247,7 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
         const KEpsilon& turbulence = *model.turbulence();
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(model, 0.01);
+            take_step(model, 0.01);
             f = measure_forces(model);
         }
         double kmax = 0.0;
