@@ -16,18 +16,13 @@
 #include "contact_log.hpp"
 #include "diagnostics.hpp"
 #include "field_output.hpp"
+#include "health_check.hpp"
 #include "model.hpp"
 #include "simulation.hpp"
 #include "timeseries.hpp"
 #include "trajectory_summary.hpp"
 
 namespace chute {
-
-// The flow's health after a step: what the time series records and the divergence check reads.
-struct FlowHealth {
-    double kinetic_energy = 0.0, max_divergence = 0.0;
-};
-FlowHealth flow_health(const FlowSolver& flow);
 
 class RunOutputs {
 public:
