@@ -1,6 +1,6 @@
 // Implicit (backward-Euler) momentum diffusion (core/implicit_diffusion.hpp): its two parts add up to the
 // explicit stress operator, and a wall-bounded shear mode decays by exactly the backward-Euler factor at a
-// step far beyond the explicit limit. Also run on 2 ranks (ctest entry parallel_np2).
+// step far beyond the explicit limit. Also run on 2 ranks (ctest entry unit_np2).
 #include <gtest/gtest.h>
 
 #include <cmath>
