@@ -1,5 +1,5 @@
 // The same case on 1 and on 2 MPI ranks gives the same fields to within the linear-solver tolerance.
-// Run under `mpirun -np 2` (ctest entry parallel_np2); on one rank the tests are skipped. Rank 0 also
+// Run under `mpirun -np 2` (ctest entry unit_np2); on one rank the tests are skipped. Rank 0 also
 // runs the case alone on MPI_COMM_SELF and compares the gathered fields.
 #include <gtest/gtest.h>
 
