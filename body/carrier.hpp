@@ -1,7 +1,7 @@
 #pragma once
-// The seam between the time step and whatever carries the bodies through the flow (DESIGN.md, "the carrier
+// The seam between the time step and whatever carries the bodies through the flow (docs/design.md, "the carrier
 // seam"). Carrier 1 is the immersed boundary (ibm/immersed_boundary.hpp); carrier 2 will be the body-fitted
-// band. The step (run/step.cpp) calls it in the order of DESIGN.md's data flow:
+// band. The step (run/step.cpp) calls it in the order of docs/design.md's data flow:
 //
 //   begin_step(u^n)                       keep what the wrench needs from the start of the step
 //   place(t^{n+1})                        prescribed bodies to their place (free bodies: rigidbody/free_bodies)

@@ -3,7 +3,7 @@
 // which degrees of freedom are locked, and its motion over a step under accelerations held constant.
 //
 // Held accelerations make the motion exact for a ballistic flight (gravity alone): x(t) = x0 + v0 t + a t^2/2.
-// That is what lets dry runs match the analytic trajectory and rebound to round-off (../shared/VALIDATION.md).
+// That is what lets dry runs match the analytic trajectory and rebound to round-off (docs/validation-targets.md).
 #include <array>
 
 #include "body.hpp"

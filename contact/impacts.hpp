@@ -13,7 +13,7 @@
 // point's normal speed, with Coulomb friction mu F_n against its sliding; sub-stepped (midpoint rule, 100
 // sub-steps per contact time) with the step's other accelerations held. For contact time T and restitution e
 // (Rn), with m* the contact point's effective mass: c = -2 m* ln(e) / T, k = m* (pi^2 + ln(e)^2) / T^2, so
-// that a free impact lasts T and rebounds at e = exp(-pi xi / sqrt(1 - xi^2)) (../shared/VALIDATION.md). The
+// that a free impact lasts T and rebounds at e = exp(-pi xi / sqrt(1 - xi^2)) (docs/validation-targets.md). The
 // event is written when the body leaves; one pressed longer than 10 T is taken as resting.
 #include <optional>
 #include <string>

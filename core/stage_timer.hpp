@@ -6,6 +6,7 @@
 //   { auto scope = timer.scope("poisson"); solve(); }      // adds the scope's wall time to "poisson"
 // A null StageTimer* gives scopes that time nothing, so a solver can be used with or without one.
 #include <chrono>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -32,6 +33,12 @@ public:
         clock::time_point start_;
     };
 
+    StageTimer() = default;
+    // Stages listed in this order whatever order they first run in (those that never run stay at zero).
+    explicit StageTimer(std::span<const std::string_view> order) {
+        for (std::string_view stage : order) stages_.emplace_back(std::string(stage), 0.0);
+    }
+
     Scope scope(std::string_view stage) { return Scope(this, stage); }
     void add(std::string_view stage, double seconds) {
         for (auto& [name, total] : stages_)
@@ -52,7 +59,9 @@ public:
         return s;
     }
     const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
-    void reset() { stages_.clear(); }
+    void reset() {
+        for (auto& st : stages_) st.second = 0.0;
+    }
 
 private:
     std::vector<std::pair<std::string, double>> stages_;

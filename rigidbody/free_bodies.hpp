@@ -2,7 +2,7 @@
 // Free bodies moved by the flow: gravity, buoyancy, the hydrodynamic wrench the carrier measures
 // (body/carrier.hpp), and contact with planes and the domain's walls (contact/).
 //
-// One step (DESIGN.md's data flow), around the flow's predict / impose / project:
+// One step (docs/design.md's data flow), around the flow's predict / impose / project:
 //   predict(t, dt)  before the carrier imposes the bodies: each free body moves over the step with the
 //                   accelerations of the last step (impacts located inside it), so the fluid is forced
 //                   towards where the body will be;

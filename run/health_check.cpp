@@ -3,7 +3,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "diagnostics.hpp"
+
 namespace chute {
+
+FlowHealth flow_health(const FlowSolver& flow) {
+    return {kinetic_energy(flow.grid(), flow.velocity()), max_divergence(flow.grid(), flow.velocity())};
+}
 
 std::optional<std::string> HealthCheck::problem(const Model& model, const StepStats& step, const FlowHealth& health) {
     const double ke = health.kinetic_energy, div = health.max_divergence;

@@ -9,9 +9,14 @@
 #include <string>
 
 #include "model.hpp"
-#include "run_outputs.hpp"
 
 namespace chute {
+
+// The flow's health after a step: what the time series records and the divergence check reads (collective).
+struct FlowHealth {
+    double kinetic_energy = 0.0, max_divergence = 0.0;
+};
+FlowHealth flow_health(const FlowSolver& flow);
 
 class HealthCheck {
 public:

@@ -1,5 +1,5 @@
 #pragma once
-// The model of a run, built once from the case (DESIGN.md, run/): the flow, the bodies, the carrier that
+// The model of a run, built once from the case (docs/design.md, run/): the flow, the bodies, the carrier that
 // imposes them on the flow, free-body dynamics and the turbulence model, wired together. The run loop, the
 // tests, the benchmarks and the parallel comparisons all build it here, so they step what users run.
 #include <mpi.h>

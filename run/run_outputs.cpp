@@ -45,10 +45,6 @@ std::filesystem::path prepare(const RunOptions& options, MPI_Comm comm) {
 
 }  // namespace
 
-FlowHealth flow_health(const FlowSolver& flow) {
-    return {kinetic_energy(flow.grid(), flow.velocity()), max_divergence(flow.grid(), flow.velocity())};
-}
-
 RunOutputs::RunOutputs(Model& model, const RunOptions& options)
     : model_(model),
       options_(options),

@@ -1,5 +1,5 @@
 #pragma once
-// What a run writes, and when (DESIGN.md, "Outputs a user gets from one run"):
+// What a run writes, and when (docs/design.md, "Outputs a user gets from one run"):
 //   every `timeseries_every` steps   timeseries.csv (step, dt, energy, divergence, solver iterations, probes),
 //                                    body_<name>.csv (kinematics and the force record), the trajectory summary
 //   at each impact                   contacts.csv
@@ -16,18 +16,13 @@
 #include "contact_log.hpp"
 #include "diagnostics.hpp"
 #include "field_output.hpp"
+#include "health_check.hpp"
 #include "model.hpp"
 #include "simulation.hpp"
 #include "timeseries.hpp"
 #include "trajectory_summary.hpp"
 
 namespace chute {
-
-// The flow's health after a step: what the time series records and the divergence check reads.
-struct FlowHealth {
-    double kinetic_energy = 0.0, max_divergence = 0.0;
-};
-FlowHealth flow_health(const FlowSolver& flow);
 
 class RunOutputs {
 public:

@@ -116,14 +116,16 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
 
     RunSummary summary;
     summary.seconds_per_step_min = std::numeric_limits<double>::infinity();
-    StageTimer stages;
+    StageTimer stages(kStepStages);
+    stages.add("health", 0.0);
+    stages.add("outputs", 0.0);
     HealthCheck health_check(config);
     Progress progress(*model, options);
     double iterations = 0.0, diffusion_iterations = 0.0;
     const auto loop_start = clock::now();
     while (!finished(*model, summary)) {
         const auto step_start = clock::now();
-        const StepStats step = advance(*model, next_dt(*model), &stages);
+        const StepStats step = take_step(*model, next_dt(*model), &stages);
         const std::vector<BodyForces> forces = measure_forces(*model, &stages);
         FlowHealth health;
         std::optional<std::string> problem;

@@ -2,14 +2,17 @@
 
 namespace chute {
 
-StepStats advance(Model& model, double dt, StageTimer* timer) {
+StepStats take_step(Model& model, double dt, StageTimer* timer) {
     FlowSolver& flow = model.flow();
     Carrier& carrier = model.carrier();
     FreeBodies& free_bodies = model.free_bodies();
     const double t = flow.time();
     flow.set_timer(timer);
 
-    carrier.begin_step(flow.velocity());
+    {
+        StageTimer::Scope timed(timer, "bodies");
+        carrier.begin_step(flow.velocity());
+    }
     dt = flow.predict(dt);
     {
         StageTimer::Scope timed(timer, "bodies");

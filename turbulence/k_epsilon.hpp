@@ -5,7 +5,7 @@
 //   deps/dt + div(u eps) = div[(nu + nu_t/sigma_eps) grad eps] + (C_1 P_k - C_2 eps) eps / k
 //   nu_t = C_mu k^2 / eps,     P_k = nu_t S^2,  S^2 = 2 S_ij S_ij
 //
-// One update per flow step, after the projection (DESIGN.md data flow), from u^{n+1}:
+// One update per flow step, after the projection (docs/design.md data flow), from u^{n+1}:
 //   transport  explicit, bounded (scalar_transport.hpp), in sub-steps when dt exceeds its diffusion limit
 //   sources    P_k explicit (optionally limited, P_k <= limit * eps), the sinks implicit:
 //              k^{n+1} = (k^n + dt (T_k + P_k)) / (1 + dt eps^n / k^n), likewise for eps with C_2,

@@ -2,6 +2,7 @@
 // A scalar array on a patch, with kGhost ghost layers on every side; x varies fastest.
 // Used for cell-centred quantities and, with the face convention of grid.hpp, for u and v.
 #include <algorithm>
+#include <cassert>
 #include <vector>
 
 #include "grid.hpp"
@@ -29,7 +30,10 @@ public:
     void fill(double value) { std::fill(data_.begin(), data_.end(), value); }
 
 private:
+    // Debug builds check the bounds (ghosts included); with NDEBUG (Release) the check compiles away.
     std::size_t index(int i, int j) const {
+        assert(i >= -kGhost && i < nx_ + kGhost && "Field2D: i out of bounds");
+        assert(j >= -kGhost && j < ny_ + kGhost && "Field2D: j out of bounds");
         return static_cast<std::size_t>(j + kGhost) * stride_ + (i + kGhost);
     }
     int nx_ = 0, ny_ = 0, stride_ = 0;

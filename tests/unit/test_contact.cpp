@@ -1,5 +1,5 @@
 // Rigid-body motion, contact and the lumped models without fluid, against closed forms
-// (../shared/VALIDATION.md, "Free fall in air" and "Contact": dry runs match the analytic ballistic trajectory
+// (docs/validation-targets.md, "Free fall in air" and "Contact": dry runs match the analytic ballistic trajectory
 // and rebound to 1e-6 relative). Held accelerations and impacts located by bisection make them exact to
 // round-off, so the tests ask for 1e-9 relative, well inside the 1e-6.
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 
 #include "impacts.hpp"
 #include "lumped_model.hpp"
+#include "print_on_rank0.hpp"
 
 using namespace chute;
 
@@ -270,8 +271,8 @@ TEST(Contact, SoftLawReboundsWithItsRestitution) {
         const auto events = fly(s, c, t1 + 0.01, 0.0137, m, {plane_through_origin(0.0)}, config);
         ASSERT_EQ(events.size(), 1u) << "turned " << turned;
         EXPECT_NEAR(events[0].time, t1, 1e-9 * t1);
-        std::printf("soft law, %s: effective restitution %.6f (Rn 0.8)\n", turned ? "turned 30 deg" : "flat",
-                    events[0].normal_restitution);
+        print_on_rank0("soft law, %s: effective restitution %.6f (Rn 0.8)\n", turned ? "turned 30 deg" : "flat",
+                       events[0].normal_restitution);
         EXPECT_NEAR(events[0].normal_restitution, 0.8, 2e-3 * 0.8) << "turned " << turned;
         EXPECT_GT(gap(kBlock, s, plane_through_origin(0.0)).distance, 0.0);  // it left the bed
         if (turned) {

@@ -1,6 +1,6 @@
 // Implicit (backward-Euler) momentum diffusion (core/implicit_diffusion.hpp): its two parts add up to the
 // explicit stress operator, and a wall-bounded shear mode decays by exactly the backward-Euler factor at a
-// step far beyond the explicit limit. Also run on 2 ranks (ctest entry parallel_np2).
+// step far beyond the explicit limit. Also run on 2 ranks (ctest entry unit_np2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 #include "flow_solver.hpp"
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"
+#include "print_on_rank0.hpp"
 #include "viscous_stress.hpp"
 
 using namespace chute;
@@ -76,9 +77,9 @@ double decay_error(BoundaryType sides, bool along_y) {
             err = std::max(err, std::abs(b - factor * a));
         }
     err = global_max(g, err);
-    std::printf("shear mode (%s sides, %s): step %.0fx the explicit limit, factor %.6f, max |u - factor u0| = %.2e\n",
-                sides == BoundaryType::wall ? "wall" : "slip", along_y ? "v(x)" : "u(y)", m.dt / (0.25 * m.h * m.h / m.c.viscosity),
-                factor, err);
+    print_on_rank0("shear mode (%s sides, %s): step %.0fx the explicit limit, factor %.6f, max |u - factor u0| = %.2e\n",
+                   sides == BoundaryType::wall ? "wall" : "slip", along_y ? "v(x)" : "u(y)", m.dt / (0.25 * m.h * m.h / m.c.viscosity),
+                   factor, err);
     return err;
 }
 
@@ -141,7 +142,7 @@ TEST(ImplicitDiffusion, PartsSumToTheFullStress) {
         }
     err = global_max(g, err);
     scale = global_max(g, scale);
-    std::printf("implicit + cross against the full stress: max difference %.2e of max |stress| %.3e\n", err, scale);
+    print_on_rank0("implicit + cross against the full stress: max difference %.2e of max |stress| %.3e\n", err, scale);
     // du is computed to round-off of u (1e-16) divided by dt (1e-9): 1e-7 absolute, about 1e-6 relative.
     EXPECT_LT(err, 1e-5 * scale);
 }

@@ -1,5 +1,5 @@
 // The same case on 1 and on 2 MPI ranks gives the same fields to within the linear-solver tolerance.
-// Run under `mpirun -np 2` (ctest entry parallel_np2); on one rank the tests are skipped. Rank 0 also
+// Run under `mpirun -np 2` (ctest entry unit_np2); on one rank the tests are skipped. Rank 0 also
 // runs the case alone on MPI_COMM_SELF and compares the gathered fields.
 #include <gtest/gtest.h>
 
@@ -198,7 +198,7 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
         Model model(cc, comm);
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(model, 0.002);
+            take_step(model, 0.002);
             f = measure_forces(model);
         }
         const BodyForces& b = f[0];
@@ -247,7 +247,7 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
         const KEpsilon& turbulence = *model.turbulence();
         std::vector<BodyForces> f;
         for (int k = 0; k < 60; ++k) {
-            advance(model, 0.01);
+            take_step(model, 0.01);
             f = measure_forces(model);
         }
         double kmax = 0.0;

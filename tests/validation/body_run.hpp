@@ -38,7 +38,7 @@ public:
 
     // One step (dt <= 0: the stable one); returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {
-        advance(model, dt > 0.0 ? dt : model.stable_dt());
+        take_step(model, dt > 0.0 ? dt : model.stable_dt());
         last = measure_forces(model);
         history.push_back({solver.time(), last.empty() ? BodyForces{} : last.at(0)});
         return last;

@@ -1,4 +1,4 @@
-// Fixed immersed bodies against published benchmarks (../shared/VALIDATION.md, docs/validation.md).
+// Fixed immersed bodies against published benchmarks (docs/validation-targets.md, docs/validation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

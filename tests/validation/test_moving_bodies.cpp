@@ -1,4 +1,4 @@
-// Bodies with prescribed motion, and static planes (../shared/VALIDATION.md, docs/validation.md).
+// Bodies with prescribed motion, and static planes (docs/validation-targets.md, docs/validation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
