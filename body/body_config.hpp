@@ -20,21 +20,21 @@ struct MotionConfig {
     std::array<double, 2> velocity{0.0, 0.0}, amplitude{0.0, 0.0}, acceleration{0.0, 0.0};
     double angular_velocity = 0.0, angular_amplitude = 0.0, angular_acceleration = 0.0;  // rad, s
     double frequency = 0.0, phase = 0.0;                                                 // Hz, rad
-    std::array<bool, 3> locked{false, false, false};  // free: x, y, rotation held
+    std::array<bool, 3> locked{false, false, false};                                     // free: x, y, rotation held
 };
 
 struct BodyConfig {
     std::string name;
     BodyShape shape = BodyShape::circle;
-    std::array<double, 2> centre{0.0, 0.0};      // circle, rectangle
-    double diameter = 0.0;                       // circle
-    std::array<double, 2> size{0.0, 0.0};        // rectangle: width, height (before rotation)
-    double angle = 0.0;                          // rad: rectangle/polygon rotation, plane inclination
-    std::vector<std::array<double, 2>> vertices; // polygon
-    std::array<double, 2> point{0.0, 0.0};       // plane: a point on it
+    std::array<double, 2> centre{0.0, 0.0};              // circle, rectangle
+    double diameter = 0.0;                               // circle
+    std::array<double, 2> size{0.0, 0.0};                // rectangle: width, height (before rotation)
+    double angle = 0.0;                                  // rad: rectangle/polygon rotation, plane inclination
+    std::vector<std::array<double, 2>> vertices;         // polygon
+    std::array<double, 2> point{0.0, 0.0};               // plane: a point on it
     std::array<double, 2> from{0.0, 0.0}, to{0.0, 0.0};  // segment
     MotionConfig motion;
-    double density = 0.0;                        // kg/m^3, free bodies
+    double density = 0.0;                                     // kg/m^3, free bodies
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
 };
 

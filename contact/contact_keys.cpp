@@ -7,7 +7,9 @@ namespace chute {
 std::vector<CaseKey> contact_keys() {
     using K = KeyType;
     return {
-        {.path = "contact", .type = K::section, .meaning = "Impacts of free bodies on planes and on wall or slip sides of the domain."},
+        {.path = "contact",
+         .type = K::section,
+         .meaning = "Impacts of free bodies on planes and on wall or slip sides of the domain."},
         {.path = "contact.law",
          .type = K::choice,
          .default_value = "lumped",

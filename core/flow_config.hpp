@@ -13,10 +13,10 @@ namespace chute {
 struct AxisConfig {
     double start = 0.0, end = 1.0;
     int cells = 32;
-    std::string spacing = "uniform";  // uniform | tanh | geometric | clustered | lines
-    double beta = 2.0;                // tanh clustering strength
-    double ratio = 1.05;              // geometric growth ratio
-    std::vector<double> lines;        // explicit lines (spacing: lines)
+    std::string spacing = "uniform";       // uniform | tanh | geometric | clustered | lines
+    double beta = 2.0;                     // tanh clustering strength
+    double ratio = 1.05;                   // geometric growth ratio
+    std::vector<double> lines;             // explicit lines (spacing: lines)
     std::array<double, 2> core{0.0, 0.0};  // clustered: the uniform window
     int core_cells = 0;                    // clustered: cells in the window
 };
@@ -29,7 +29,7 @@ struct BoundaryConfig {
     BoundaryType type = BoundaryType::wall;
     std::array<double, 2> velocity{0.0, 0.0};  // wall: wall velocity; inflow (uniform): inflow velocity
     InflowProfile profile = InflowProfile::uniform;
-    double peak = 0.0;                          // parabolic inflow: peak normal speed into the domain
+    double peak = 0.0;  // parabolic inflow: peak normal speed into the domain
     OutflowKind outflow = OutflowKind::convective;
 };
 
@@ -41,9 +41,9 @@ enum class DiffusionScheme { explicit_ab2, implicit_euler, automatic };
 
 struct FlowConfig {
     AxisConfig x, y;
-    double density = 1000.0;    // kg/m^3
-    double viscosity = 1e-6;    // kinematic, m^2/s
-    double depth = 1.0;         // m, span of a 2D run
+    double density = 1000.0;                     // kg/m^3
+    double viscosity = 1e-6;                     // kinematic, m^2/s
+    double depth = 1.0;                          // m, span of a 2D run
     std::array<double, 2> body_force{0.0, 0.0};  // m/s^2, constant acceleration on the fluid
 
     InitialCondition initial = InitialCondition::uniform;
@@ -55,16 +55,16 @@ struct FlowConfig {
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;
-    long max_steps = -1;          // -1: no limit
-    double cfl = 0.3;             // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
-    double diffusion_number = 0.2; // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
+    long max_steps = -1;            // -1: no limit
+    double cfl = 0.3;               // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
+    double diffusion_number = 0.2;  // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
     DiffusionScheme diffusion = DiffusionScheme::automatic;  // time integration of the stress (flow_solver.hpp)
     std::optional<double> fixed_dt;
     double max_dt = 1e30;
     double poisson_tolerance = 1e-8;
     int poisson_max_iterations = 200;
-    double divergence_limit = 1e-3;   // abort if max |div u| dt exceeds this
-    std::array<int, 2> ranks{0, 0};   // 0: automatic
+    double divergence_limit = 1e-3;  // abort if max |div u| dt exceeds this
+    std::array<int, 2> ranks{0, 0};  // 0: automatic
 };
 
 // The schema's flow section (io/case_reader.hpp): domain.*, fluid.*, initial.*, boundaries.*, numerics.* but

@@ -113,10 +113,7 @@ std::vector<CaseKey> flow_keys() {
     const std::vector<std::string_view> from_ends = {"uniform", "tanh", "geometric", "clustered"};
     return {
         {.path = "domain", .type = K::section, .required = true, .meaning = "The rectangle and its grid."},
-        {.path = "domain.<axis>",
-         .type = K::section,
-         .required = true,
-         .meaning = "Grid lines along x or along y."},
+        {.path = "domain.<axis>", .type = K::section, .required = true, .meaning = "Grid lines along x or along y."},
         {.path = "domain.<axis>.start",
          .type = K::number,
          .required = true,

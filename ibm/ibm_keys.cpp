@@ -33,9 +33,10 @@ std::vector<CaseKey> ibm_keys() {
          .default_value = "0.3",
          .min = at_least(0.0),
          .max = at_most(1.0),
-         .meaning = "Markers of closed outlines moved this many cells inside the surface, to offset the "
-                    "thickness of the diffuse interface (Breugem 2012, 0.3 with the roma3 kernel). 0.3 puts the DFG 2D-1 "
-                    "drag in the published band at 40 cells per diameter (docs/validation.md)."},
+         .meaning =
+             "Markers of closed outlines moved this many cells inside the surface, to offset the "
+             "thickness of the diffuse interface (Breugem 2012, 0.3 with the roma3 kernel). 0.3 puts the DFG 2D-1 "
+             "drag in the published band at 40 cells per diameter (docs/validation.md)."},
         {.path = "numerics.ibm.stress_probes",
          .type = K::vector2,
          .default_value = "[1.5, 2.5]",

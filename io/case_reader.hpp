@@ -35,7 +35,7 @@ namespace chute {
 
 // A mistake in a case file or in a --set override.
 class CaseError : public std::runtime_error {
-  public:
+public:
     using std::runtime_error::runtime_error;
 };
 
@@ -93,11 +93,10 @@ struct Placeholder {
 // ---- the reader ----
 
 class CaseReader {
-  public:
+public:
     // `keys` and `placeholders` are the whole schema; they must outlive the reader. `file` names the case in
     // messages (empty: text given directly, e.g. in tests).
-    CaseReader(const std::vector<CaseKey>& keys, const std::vector<Placeholder>& placeholders,
-               std::string file = {});
+    CaseReader(const std::vector<CaseKey>& keys, const std::vector<Placeholder>& placeholders, std::string file = {});
 
     // The keys of a YAML text (a syntax error is a CaseError naming the file, line and column), or of a parsed
     // document. An empty document gives no keys (the required ones are then missing).
@@ -140,7 +139,7 @@ class CaseReader {
     // "path[i]": the key path of a list's element, as messages name it.
     static std::string indexed(std::string_view path, std::size_t i);
 
-  private:
+private:
     struct Entry {
         YAML::Node node;
         YAML::Mark key_mark;  // where the key itself is written (null: made by a --set)

@@ -31,8 +31,8 @@ struct CaseConfig : FlowConfig {
     double field_interval = 0.0;       // s between field snapshots; 0: first and last only
     double checkpoint_interval = 0.0;  // s between checkpoints; 0: last only
     int checkpoints_kept = 2;
-    int timeseries_every = 1;          // steps
-    double progress_interval = 2.0;    // wall seconds between progress lines
+    int timeseries_every = 1;        // steps
+    double progress_interval = 2.0;  // wall seconds between progress lines
     std::vector<std::array<double, 2>> probes;
     bool plots = true;
 };

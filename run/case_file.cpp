@@ -76,10 +76,7 @@ std::vector<CaseKey> output_keys() {
          .default_value = "[]",
          .units = "m",
          .meaning = "Points [x, y] sampled into the time series; each must lie inside the domain."},
-        {.path = "output.plots",
-         .type = K::boolean,
-         .default_value = "true",
-         .meaning = "Write plots of the results."},
+        {.path = "output.plots", .type = K::boolean, .default_value = "true", .meaning = "Write plots of the results."},
     };
 }
 
