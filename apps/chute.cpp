@@ -2,9 +2,9 @@
 //   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT] [--no-plots]
 //             [--sweep key.path=v1,v2,... ...]   one run per combination, in DIR/<key>=<value>,...
 //   chute keys            prints every case-file key (the table of docs/case-file.md)
-#include <CLI/CLI.hpp>
 #include <HYPRE_utilities.h>
 #include <mpi.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -59,14 +59,14 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     chute::RunOptions options;
     options.out_dir = out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
     if (!restart.empty()) {
-        if (!std::filesystem::exists(restart)) throw chute::CaseError("--restart: no checkpoint file '" + restart + "'");
+        if (!std::filesystem::exists(restart))
+            throw chute::CaseError("--restart: no checkpoint file '" + restart + "'");
         options.restart = restart;
     }
     options.case_yaml = case_as_run(case_file, overrides);
     if (rank == 0)
-        std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n",
-                    config.name.c_str(), config.x.cells, config.y.cells, size, config.end_time,
-                    options.out_dir.string().c_str());
+        std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n", config.name.c_str(),
+                    config.x.cells, config.y.cells, size, config.end_time, options.out_dir.string().c_str());
     chute::install_stop_handlers();
     const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
     if (rank == 0) {
@@ -74,7 +74,8 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
         std::printf("%s", text.c_str());
         chute::write_text_atomically(options.out_dir / "summary.txt", text);
         if (config.plots) {
-            const std::string cmd = "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
+            const std::string cmd =
+                "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
             if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "chute: plotting failed (results are complete)\n");
         }
     }
@@ -99,8 +100,10 @@ std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& 
     for (const char ch : text.substr(eq + 1)) {
         if (ch == '[' || ch == '{') ++depth;
         if (ch == ']' || ch == '}') --depth;
-        if (ch == ',' && depth == 0) values.emplace_back();
-        else values.back() += ch;
+        if (ch == ',' && depth == 0)
+            values.emplace_back();
+        else
+            values.back() += ch;
     }
     for (auto& v : values) {
         v.erase(0, v.find_first_not_of(' '));
@@ -144,7 +147,8 @@ int sweep_command(const std::filesystem::path& case_file, const std::filesystem:
     for (std::size_t k = 0; k < runs.size(); ++k) {
         std::vector<std::string> all = overrides;
         all.insert(all.end(), runs[k].begin(), runs[k].end());
-        if (rank == 0) std::printf("chute: sweep run %zu of %zu: %s\n", k + 1, runs.size(), folders[k].string().c_str());
+        if (rank == 0)
+            std::printf("chute: sweep run %zu of %zu: %s\n", k + 1, runs.size(), folders[k].string().c_str());
         const int code = run_command(case_file, folders[k], all, "", no_plots);
         if (rank == 0) {
             report += "== " + folders[k].filename().string() + "\n" + read_file(folders[k] / "summary.txt") + "\n";
@@ -152,7 +156,9 @@ int sweep_command(const std::filesystem::path& case_file, const std::filesystem:
         }
         if (code != 0) return code;
     }
-    if (rank == 0) std::printf("chute: sweep of %zu runs done; summaries in %s\n", runs.size(), (base / "sweep.txt").string().c_str());
+    if (rank == 0)
+        std::printf("chute: sweep of %zu runs done; summaries in %s\n", runs.size(),
+                    (base / "sweep.txt").string().c_str());
     return 0;
 }
 

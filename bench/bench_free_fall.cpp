@@ -39,9 +39,10 @@ void run(const std::string& path, int steps, int warmup, int rank, int size) {
     }
     if (rank == 0) {
         const double per = 1e3 / steps;
-        std::printf("case %s, %d x %d cells, %d rank(s), %d steps timed after %d (t = %.3f s, block speed %.3f m/s)\n\n",
-                    path.c_str(), c.x.cells, c.y.cells, size, steps, warmup, model.flow().time(),
-                    model.bodies()[0].state().velocity.norm());
+        std::printf(
+            "case %s, %d x %d cells, %d rank(s), %d steps timed after %d (t = %.3f s, block speed %.3f m/s)\n\n",
+            path.c_str(), c.x.cells, c.y.cells, size, steps, warmup, model.flow().time(),
+            model.bodies()[0].state().velocity.norm());
         std::printf("| ms / step |");
         for (const auto& [stage, seconds] : stages.stages()) std::printf(" %s |", stage.c_str());
         std::printf("\n|---|");
@@ -64,9 +65,12 @@ int main(int argc, char** argv) {
     std::string path = std::string(CHUTE_SOURCE_DIR) + "/examples/free_fall_block/case.yaml";
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
-        if (a == "--steps" && k + 1 < argc) steps = std::atoi(argv[++k]);
-        else if (a == "--warmup" && k + 1 < argc) warmup = std::atoi(argv[++k]);
-        else path = a;
+        if (a == "--steps" && k + 1 < argc)
+            steps = std::atoi(argv[++k]);
+        else if (a == "--warmup" && k + 1 < argc)
+            warmup = std::atoi(argv[++k]);
+        else
+            path = a;
     }
     run(path, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
     MPI_Finalize();

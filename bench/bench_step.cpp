@@ -159,9 +159,12 @@ std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
     const int nx = g.nx(), ny = g.ny();
     volatile double sink = 0.0;
     std::vector<KernelRow> rows;
-    auto add = [&](const char* name, const std::function<void()>& f) { rows.push_back({name, best_time(comm, repeats, true, f)}); };
+    auto add = [&](const char* name, const std::function<void()>& f) {
+        rows.push_back({name, best_time(comm, repeats, true, f)});
+    };
 
-    add("time_step_limits (next_dt)", [&] { sink = time_step_limits(g, vel, c.viscosity, c.cfl, c.diffusion_number).stable(); });
+    add("time_step_limits (next_dt)",
+        [&] { sink = time_step_limits(g, vel, c.viscosity, c.cfl, c.diffusion_number).stable(); });
     add("convection (central)", [&] { convection(g, c.convection, vel, bc.u_first(), bc.v_first(), rhs); });
     add("add_diffusion", [&] { add_diffusion(g, c.viscosity, vel, bc.u_first(), bc.v_first(), rhs); });
     add("AB2 update u*", [&] {
@@ -231,17 +234,23 @@ int main(int argc, char** argv) {
             }
             return argv[++a];
         };
-        if (arg == "--warmup") opt.warmup = std::atoi(value());
-        else if (arg == "--min-steps") opt.min_steps = std::atoi(value());
-        else if (arg == "--min-seconds") opt.min_seconds = std::atof(value());
-        else if (arg == "--poisson-repeats") opt.poisson_repeats = std::atoi(value());
-        else if (arg == "--kernels") opt.kernels = true;
+        if (arg == "--warmup")
+            opt.warmup = std::atoi(value());
+        else if (arg == "--min-steps")
+            opt.min_steps = std::atoi(value());
+        else if (arg == "--min-seconds")
+            opt.min_seconds = std::atof(value());
+        else if (arg == "--poisson-repeats")
+            opt.poisson_repeats = std::atoi(value());
+        else if (arg == "--kernels")
+            opt.kernels = true;
         else if (arg == "-h" || arg == "--help") {
             if (root) usage();
             HYPRE_Finalize();
             MPI_Finalize();
             return 0;
-        } else if (const int n = std::atoi(arg.c_str()); n >= 8) opt.grids.push_back(n);
+        } else if (const int n = std::atoi(arg.c_str()); n >= 8)
+            opt.grids.push_back(n);
         else {
             if (root) usage();
             MPI_Abort(MPI_COMM_WORLD, 2);
@@ -252,9 +261,10 @@ int main(int argc, char** argv) {
     if (root) {
         std::printf("Machine: %s, %d cores; %s; load average at start %s\n\n", cpu_model().c_str(), cpu_count(),
                     today().c_str(), load_average().c_str());
-        std::printf("Case: lid-driven cavity, Re 1000, central convection, CFL 0.5, Poisson tol 1e-8; %d warm-up "
-                    "steps, then >= %d steps and >= %.1f s timed.\n\n",
-                    opt.warmup, opt.min_steps, opt.min_seconds);
+        std::printf(
+            "Case: lid-driven cavity, Re 1000, central convection, CFL 0.5, Poisson tol 1e-8; %d warm-up "
+            "steps, then >= %d steps and >= %.1f s timed.\n\n",
+            opt.warmup, opt.min_steps, opt.min_seconds);
         std::fflush(stdout);
     }
 
@@ -332,21 +342,22 @@ int main(int argc, char** argv) {
 
     if (root) {
         std::printf("### Time step, %d rank%s\n\n", size, size > 1 ? "s" : "");
-        std::printf("| ranks | grid | steps | us / cell-step | Poisson share | momentum share | correction share | "
-                    "Poisson it. (mean) | cell-steps / s | min step, ms | diagnostics, us / cell |\n");
+        std::printf(
+            "| ranks | grid | steps | us / cell-step | Poisson share | momentum share | correction share | "
+            "Poisson it. (mean) | cell-steps / s | min step, ms | diagnostics, us / cell |\n");
         std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (const auto& r : steps) {
             const double cells = static_cast<double>(r.n) * r.n;
             const double per_step = r.seconds / r.steps;
             std::printf("| %d | %d^2 | %ld | %.3f | %.0f %% | %.0f %% | %.0f %% | %.1f | %.3g | %.1f | %.3f |\n", size,
                         r.n, r.steps, 1e6 * per_step / cells, 100 * r.sec_poisson / r.seconds,
-                        100 * r.sec_momentum / r.seconds, 100 * r.sec_correction / r.seconds,
-                        r.iterations / r.steps, cells / per_step, 1e3 * r.min_step,
-                        1e6 * r.sec_diagnostics / r.steps / cells);
+                        100 * r.sec_momentum / r.seconds, 100 * r.sec_correction / r.seconds, r.iterations / r.steps,
+                        cells / per_step, 1e3 * r.min_step, 1e6 * r.sec_diagnostics / r.steps / cells);
         }
-        std::printf("\n### Poisson solve alone (zero guess, tolerance 1e-8, all-Neumann, random zero-mean "
-                    "right-hand side, best of %d), %d rank%s\n\n",
-                    opt.poisson_repeats, size, size > 1 ? "s" : "");
+        std::printf(
+            "\n### Poisson solve alone (zero guess, tolerance 1e-8, all-Neumann, random zero-mean "
+            "right-hand side, best of %d), %d rank%s\n\n",
+            opt.poisson_repeats, size, size > 1 ? "s" : "");
         std::printf("| ranks | grid | iterations | solve, s | us / unknown | us / unknown / iteration |\n");
         std::printf("|---|---|---|---|---|---|\n");
         for (const auto& r : poisson) {
@@ -356,8 +367,8 @@ int main(int argc, char** argv) {
         }
         for (const auto& [n, rows] : kernels) {
             const double cells = static_cast<double>(n) * n;
-            std::printf("\n### Parts of the step timed one by one from cold caches, %d^2, %d rank%s (best of 5)\n\n", n, size,
-                        size > 1 ? "s" : "");
+            std::printf("\n### Parts of the step timed one by one from cold caches, %d^2, %d rank%s (best of 5)\n\n", n,
+                        size, size > 1 ? "s" : "");
             std::printf("| part | us / cell |\n|---|---|\n");
             double total = 0.0;
             for (const auto& k : rows) {

@@ -54,7 +54,9 @@ public:
 
     Vec2 to_world(const Vec2& r) const { return state_.centre + rotated(r, state_.angle); }
     Vec2 direction_to_world(const Vec2& d) const { return rotated(d, state_.angle); }
-    Vec2 velocity_at(const Vec2& X) const { return state_.velocity + state_.angular_velocity * perp(X - state_.centre); }
+    Vec2 velocity_at(const Vec2& X) const {
+        return state_.velocity + state_.angular_velocity * perp(X - state_.centre);
+    }
     bool contains(const Vec2& X) const { return outline_.contains(rotated(X - state_.centre, -state_.angle)); }
 
     double area() const { return outline_.area(); }

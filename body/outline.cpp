@@ -57,7 +57,8 @@ double Outline::perimeter() const {
     if (kind_ == Kind::circle) return 2.0 * std::numbers::pi * radius_;
     if (kind_ == Kind::segment) return (vertices_[1] - vertices_[0]).norm();
     double s = 0.0;
-    for (std::size_t k = 0; k < vertices_.size(); ++k) s += (vertices_[(k + 1) % vertices_.size()] - vertices_[k]).norm();
+    for (std::size_t k = 0; k < vertices_.size(); ++k)
+        s += (vertices_[(k + 1) % vertices_.size()] - vertices_[k]).norm();
     return s;
 }
 

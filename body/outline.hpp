@@ -23,9 +23,9 @@ inline Vec2 rotated(const Vec2& r, double angle) {
 }
 
 struct Marker {
-    Vec2 position;     // body frame
-    Vec2 normal;       // outward unit normal (into the fluid), body frame
-    double length;     // outline length this marker stands for (m)
+    Vec2 position;  // body frame
+    Vec2 normal;    // outward unit normal (into the fluid), body frame
+    double length;  // outline length this marker stands for (m)
 };
 
 class Outline {

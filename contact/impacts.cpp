@@ -21,8 +21,10 @@ bool hold_on(BodyState& s, const Obstacle& ob, const RigidInertia& m, const Cont
     if (an > 0.0) return false;
     double vt = s.velocity.dot(t), at = s.acceleration.dot(t);
     const double friction = c.friction * -an;
-    if (vt != 0.0) at -= std::copysign(friction, vt);
-    else at = std::abs(at) <= friction ? 0.0 : at - std::copysign(friction, at);
+    if (vt != 0.0)
+        at -= std::copysign(friction, vt);
+    else
+        at = std::abs(at) <= friction ? 0.0 : at - std::copysign(friction, at);
     s.velocity = vt * t;
     s.acceleration = at * t;
     s.angular_velocity = 0.0;
@@ -160,8 +162,7 @@ std::vector<ContactEvent> move_with_contacts(BodyState& s, ContactState& contact
             }
             continue;
         }
-        if (contact.resting_on >= 0 && !hold_on(s, obstacles[contact.resting_on], m, config))
-            contact.resting_on = -1;
+        if (contact.resting_on >= 0 && !hold_on(s, obstacles[contact.resting_on], m, config)) contact.resting_on = -1;
         // Sliding that friction stops inside the step: stop there, then hold.
         double until = remaining;
         if (contact.resting_on >= 0 && s.velocity.dot(s.acceleration) < 0.0)

@@ -10,8 +10,8 @@ namespace chute {
 
 struct Obstacle {
     std::string name;
-    Vec2 point = Vec2::Zero();   // a point of the plane
-    Vec2 normal = Vec2::UnitY(); // unit normal pointing out of the solid, into the fluid
+    Vec2 point = Vec2::Zero();    // a point of the plane
+    Vec2 normal = Vec2::UnitY();  // unit normal pointing out of the solid, into the fluid
 };
 
 // How far the body's nearest point lies from the obstacle (negative: overlap), and that point (world frame).

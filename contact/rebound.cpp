@@ -17,8 +17,8 @@ void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& 
     const Vec2 t = -perp(n);
     const double Vn = before.dot(n), Vt = before.dot(t);
     e.normal_restitution = -after.dot(n) / Vn;
-    e.tangential_restitution = std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt
-                                                                     : std::numeric_limits<double>::quiet_NaN();
+    e.tangential_restitution =
+        std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN();
 }
 
 ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m, const ContactConfig& c) {

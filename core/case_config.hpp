@@ -11,10 +11,10 @@ namespace chute {
 struct AxisConfig {
     double start = 0.0, end = 1.0;
     int cells = 32;
-    std::string spacing = "uniform";  // uniform | tanh | geometric | clustered | lines
-    double beta = 2.0;                // tanh clustering strength
-    double ratio = 1.05;              // geometric growth ratio
-    std::vector<double> lines;        // explicit lines (spacing: lines)
+    std::string spacing = "uniform";       // uniform | tanh | geometric | clustered | lines
+    double beta = 2.0;                     // tanh clustering strength
+    double ratio = 1.05;                   // geometric growth ratio
+    std::vector<double> lines;             // explicit lines (spacing: lines)
     std::array<double, 2> core{0.0, 0.0};  // clustered: the uniform window
     int core_cells = 0;                    // clustered: cells in the window
 };
@@ -27,7 +27,7 @@ struct BoundaryConfig {
     BoundaryType type = BoundaryType::wall;
     std::array<double, 2> velocity{0.0, 0.0};  // wall: wall velocity; inflow (uniform): inflow velocity
     InflowProfile profile = InflowProfile::uniform;
-    double peak = 0.0;                          // parabolic inflow: peak normal speed into the domain
+    double peak = 0.0;  // parabolic inflow: peak normal speed into the domain
     OutflowKind outflow = OutflowKind::convective;
 };
 
@@ -45,31 +45,31 @@ struct MotionConfig {
     std::array<double, 2> velocity{0.0, 0.0}, amplitude{0.0, 0.0}, acceleration{0.0, 0.0};
     double angular_velocity = 0.0, angular_amplitude = 0.0, angular_acceleration = 0.0;  // rad, s
     double frequency = 0.0, phase = 0.0;                                                 // Hz, rad
-    std::array<bool, 3> locked{false, false, false};  // free: x, y, rotation held
+    std::array<bool, 3> locked{false, false, false};                                     // free: x, y, rotation held
 };
 
 struct BodyConfig {
     std::string name;
     BodyShape shape = BodyShape::circle;
-    std::array<double, 2> centre{0.0, 0.0};      // circle, rectangle
-    double diameter = 0.0;                       // circle
-    std::array<double, 2> size{0.0, 0.0};        // rectangle: width, height (before rotation)
-    double angle = 0.0;                          // rad: rectangle/polygon rotation, plane inclination
-    std::vector<std::array<double, 2>> vertices; // polygon
-    std::array<double, 2> point{0.0, 0.0};       // plane: a point on it
+    std::array<double, 2> centre{0.0, 0.0};              // circle, rectangle
+    double diameter = 0.0;                               // circle
+    std::array<double, 2> size{0.0, 0.0};                // rectangle: width, height (before rotation)
+    double angle = 0.0;                                  // rad: rectangle/polygon rotation, plane inclination
+    std::vector<std::array<double, 2>> vertices;         // polygon
+    std::array<double, 2> point{0.0, 0.0};               // plane: a point on it
     std::array<double, 2> from{0.0, 0.0}, to{0.0, 0.0};  // segment
     MotionConfig motion;
-    double density = 0.0;                        // kg/m^3, free bodies
+    double density = 0.0;                                     // kg/m^3, free bodies
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
 };
 
 struct IbmConfig {
     DeltaKernel kernel = DeltaKernel::roma3;
-    int forcing_iterations = 3;              // multi-direct forcing (Breugem 2012)
-    double marker_spacing = 1.0;             // in grid cells
-    double retraction = 0.3;                 // markers moved inwards by this many cells
+    int forcing_iterations = 3;                     // multi-direct forcing (Breugem 2012)
+    double marker_spacing = 1.0;                    // in grid cells
+    double retraction = 0.3;                        // markers moved inwards by this many cells
     std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
-    double virtual_mass = 1.0;               // C_V of the free-body update (Schwarz et al. 2015)
+    double virtual_mass = 1.0;                      // C_V of the free-body update (Schwarz et al. 2015)
 };
 
 // ---- Free bodies (rigidbody/) and contact (contact/) ----
@@ -106,12 +106,12 @@ enum class DiffusionScheme { explicit_ab2, implicit_euler, automatic };
 
 struct TurbulenceConfig {
     TurbulenceModelType model = TurbulenceModelType::laminar;
-    double intensity = 0.05;        // I: inflow and initial k = 3/2 (I U)^2
-    double length_scale = 0.1;      // m: inflow and initial eps = C_mu^{3/4} k^{3/2} / l
-    double velocity_scale = 0.0;    // m/s: U of the initial k; 0: the largest inflow or initial speed
-    double production_limit = 10.0; // P_k <= limit * eps (0: no limiter)
-    bool kato_launder = false;      // P_k = nu_t S Omega (Kato & Launder 1993) instead of nu_t S^2
-    double image_distance = 2.0;    // cells: where wall functions sample the flow beside an immersed surface
+    double intensity = 0.05;         // I: inflow and initial k = 3/2 (I U)^2
+    double length_scale = 0.1;       // m: inflow and initial eps = C_mu^{3/4} k^{3/2} / l
+    double velocity_scale = 0.0;     // m/s: U of the initial k; 0: the largest inflow or initial speed
+    double production_limit = 10.0;  // P_k <= limit * eps (0: no limiter)
+    bool kato_launder = false;       // P_k = nu_t S Omega (Kato & Launder 1993) instead of nu_t S^2
+    double image_distance = 2.0;     // cells: where wall functions sample the flow beside an immersed surface
 };
 
 enum class ConvectionScheme { central, van_leer, koren };
@@ -120,9 +120,9 @@ enum class InitialCondition { uniform, taylor_green };
 struct CaseConfig {
     std::string name = "case";
     AxisConfig x, y;
-    double density = 1000.0;    // kg/m^3
-    double viscosity = 1e-6;    // kinematic, m^2/s
-    double depth = 1.0;         // m, span of a 2D run
+    double density = 1000.0;                     // kg/m^3
+    double viscosity = 1e-6;                     // kinematic, m^2/s
+    double depth = 1.0;                          // m, span of a 2D run
     std::array<double, 2> body_force{0.0, 0.0};  // m/s^2, constant acceleration on the fluid
     std::array<double, 2> gravity{0.0, -9.81};   // m/s^2, on free bodies
 
@@ -141,23 +141,23 @@ struct CaseConfig {
 
     ConvectionScheme convection = ConvectionScheme::central;
     double end_time = 1.0;
-    long max_steps = -1;          // -1: no limit
-    double cfl = 0.3;             // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
-    double diffusion_number = 0.2; // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
+    long max_steps = -1;            // -1: no limit
+    double cfl = 0.3;               // AB2 stability: central 0.5+, van_leer 0.4, koren 0.3 (docs/case-file.md)
+    double diffusion_number = 0.2;  // dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable up to 0.25
     DiffusionScheme diffusion = DiffusionScheme::automatic;  // time integration of the stress (flow_solver.hpp)
     std::optional<double> fixed_dt;
     double max_dt = 1e30;
     double poisson_tolerance = 1e-8;
     int poisson_max_iterations = 200;
-    double divergence_limit = 1e-3;   // abort if max |div u| dt exceeds this
-    std::array<int, 2> ranks{0, 0};   // 0: automatic
+    double divergence_limit = 1e-3;  // abort if max |div u| dt exceeds this
+    std::array<int, 2> ranks{0, 0};  // 0: automatic
 
     // Outputs
     double field_interval = 0.0;       // s between field snapshots; 0: first and last only
     double checkpoint_interval = 0.0;  // s between checkpoints; 0: last only
     int checkpoints_kept = 2;
-    int timeseries_every = 1;          // steps
-    double progress_interval = 2.0;    // wall seconds between progress lines
+    int timeseries_every = 1;        // steps
+    double progress_interval = 2.0;  // wall seconds between progress lines
     std::vector<std::array<double, 2>> probes;
     bool plots = true;
 };

@@ -29,8 +29,8 @@ FlowSolver::FlowSolver(const CaseConfig& config, MPI_Comm comm) : config_(config
     bc_ = std::make_unique<BoundaryConditions>(*grid_, config_.boundary);
     std::array<bool, 4> dirichlet{};
     for (Side s : kSides) dirichlet[static_cast<int>(s)] = bc_->pressure_dirichlet(s);
-    poisson_ = std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance,
-                                               config_.poisson_max_iterations);
+    poisson_ =
+        std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance, config_.poisson_max_iterations);
     implicit_now_ = config_.diffusion == DiffusionScheme::implicit_euler;
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);
@@ -109,9 +109,12 @@ double FlowSolver::diffusion_limit() const {
 // a limit hovering near the CFL step does not switch (and drop to a forward-Euler step) every few steps.
 bool FlowSolver::implicit_step(double dt) const {
     switch (config_.diffusion) {
-        case DiffusionScheme::explicit_ab2: return false;
-        case DiffusionScheme::implicit_euler: return true;
-        case DiffusionScheme::automatic: break;
+        case DiffusionScheme::explicit_ab2:
+            return false;
+        case DiffusionScheme::implicit_euler:
+            return true;
+        case DiffusionScheme::automatic:
+            break;
     }
     if (!eddy_on_) return false;
     return dt > (implicit_now_ ? 2.0 / 3.0 : 1.0) * diffusion_limit();

@@ -34,7 +34,7 @@ namespace chute {
 struct StepStats {
     double dt = 0.0;
     int poisson_iterations = 0;
-    int diffusion_iterations = 0;    // implicit diffusion: PCG iterations of the larger component
+    int diffusion_iterations = 0;  // implicit diffusion: PCG iterations of the larger component
     double poisson_residual = 0.0;
 };
 
@@ -75,7 +75,7 @@ public:
     // refresh_ghosts() so halos and boundary values are consistent.
     Velocity& velocity() { return vel_; }
     Field2D& pressure() { return p_; }
-    Velocity& previous_rhs() { return rhs_old_; }  // H^{n-1} of the AB2 scheme
+    Velocity& previous_rhs() { return rhs_old_; }    // H^{n-1} of the AB2 scheme
     Field2D& previous_pressure() { return p_old_; }  // p^{n-3/2}, for the Poisson solver's starting guess
     double previous_dt() const { return dt_previous_; }
     // Whether the last step's diffusion was implicit (checkpoints carry it: `auto` switches with hysteresis).
@@ -89,12 +89,12 @@ public:
     void set_timer(StageTimer* timer) { timer_ = timer; }
 
 private:
-    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;      // H = -C(u) + nu L(u)
-    double diffusion_limit() const;                                   // explicit limit with nu + max nu_t
-    bool implicit_step(double dt) const;                              // the scheme of a step of size dt
-    void predict_velocity(double dt, double r);                       // u* from u^n, H^n, H^{n-1}, f, p
-    void pressure_increment_guess(double r);                          // phi <- r (p^n - p^{n-1})
-    double poisson_residual_floor(double dt) const;                   // absolute tolerance of the solve
+    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;  // H = -C(u) + nu L(u)
+    double diffusion_limit() const;                               // explicit limit with nu + max nu_t
+    bool implicit_step(double dt) const;                          // the scheme of a step of size dt
+    void predict_velocity(double dt, double r);                   // u* from u^n, H^n, H^{n-1}, f, p
+    void pressure_increment_guess(double r);                      // phi <- r (p^n - p^{n-1})
+    double poisson_residual_floor(double dt) const;               // absolute tolerance of the solve
 
     CaseConfig config_;
     std::unique_ptr<Grid> grid_;
@@ -102,8 +102,8 @@ private:
     std::unique_ptr<BoundaryConditions> bc_;
     std::unique_ptr<PoissonSolver> poisson_;
     std::unique_ptr<ImplicitDiffusion> implicit_;  // made at the first implicit step
-    bool implicit_now_ = false;  // the scheme of the last step (numerics.diffusion auto switches)
-    double inverse_h2_max_ = 0.0;  // max of 1/dx^2 + 1/dy^2 over the grid (diffusion limit)
+    bool implicit_now_ = false;                    // the scheme of the last step (numerics.diffusion auto switches)
+    double inverse_h2_max_ = 0.0;                  // max of 1/dx^2 + 1/dy^2 over the grid (diffusion limit)
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
     StepStats pending_;  // the predict() half of the step being taken

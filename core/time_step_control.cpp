@@ -19,8 +19,7 @@ double max_inverse_square_spacing(const Grid& grid) {
     return m;
 }
 
-TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
-                                double diffusion_number) {
+TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     double rate[2] = {0.0, 0.0};  // max convective rate |u|/dx + |v|/dy, max diffusive rate

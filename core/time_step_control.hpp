@@ -17,7 +17,6 @@ struct TimeStepLimits {
 double max_inverse_square_spacing(const Grid& grid);
 
 // Global (all ranks) limits for the current velocity.
-TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl,
-                                double diffusion_number);
+TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number);
 
 }  // namespace chute

@@ -1,7 +1,7 @@
 #include "direct_forcing.hpp"
 
-#include <algorithm>
 #include <mpi.h>
+#include <algorithm>
 
 #include <cmath>
 

@@ -53,16 +53,16 @@ private:
     const Grid& grid_;
     IbmConfig config_;
     const std::vector<Body>& bodies_;
-    std::vector<double> cell_size_;      // smallest grid spacing along each body's outline
-    std::vector<std::size_t> ranges_;    // markers of body b: [ranges_[b], ranges_[b+1])
-    std::vector<Marker> body_frame_;     // all markers, body frame (retraction applied)
-    std::vector<Vec2> world_;            // all markers, world frame
-    std::vector<double> volume_;         // dV_l
+    std::vector<double> cell_size_;    // smallest grid spacing along each body's outline
+    std::vector<std::size_t> ranges_;  // markers of body b: [ranges_[b], ranges_[b+1])
+    std::vector<Marker> body_frame_;   // all markers, body frame (retraction applied)
+    std::vector<Vec2> world_;          // all markers, world frame
+    std::vector<double> volume_;       // dV_l
     std::vector<Stencil> su_, sv_;
     struct InteriorFace {
-        int i, j;          // local indices of an owned face
-        bool is_u;         // u face or v face
-        double volume;     // its control volume (per unit depth)
+        int i, j;       // local indices of an owned face
+        bool is_u;      // u face or v face
+        double volume;  // its control volume (per unit depth)
         Vec2 position;
     };
     std::vector<std::vector<InteriorFace>> interior_;  // per body

@@ -17,9 +17,9 @@ int cell_below(const Axis& axis, double x) {
 // Positions of one staggering along one axis: grid lines (face direction) or cell centres.
 struct AxisPoints {
     const Axis& axis;
-    bool on_lines;       // positions are lines (k = 0..N) rather than centres (k = 0..N-1)
-    int first, last;     // global indices that carry an unknown the forcing may touch
-    int offset, owned;   // this rank's first global index and owned count (local index = k - offset)
+    bool on_lines;      // positions are lines (k = 0..N) rather than centres (k = 0..N-1)
+    int first, last;    // global indices that carry an unknown the forcing may touch
+    int offset, owned;  // this rank's first global index and owned count (local index = k - offset)
 
     double position(int k) const { return on_lines ? axis.line(k) : axis.centre(k); }
     // Global index of the point at or below x (may be outside [first, last]).
@@ -38,9 +38,7 @@ struct AxisPoints {
     }
     bool is_owned(int k) const { return k >= offset && k < offset + owned; }
     // Width of the control volume around point k.
-    double volume_width(int k) const {
-        return on_lines ? axis.centre(k) - axis.centre(k - 1) : axis.width(k);
-    }
+    double volume_width(int k) const { return on_lines ? axis.centre(k) - axis.centre(k - 1) : axis.width(k); }
 };
 
 AxisPoints axis_points(const Grid& grid, Staggering s, int dir) {
@@ -63,8 +61,7 @@ Stencil build(const AxisPoints& ax, const AxisPoints& ay, const std::vector<std:
             const double w = fx * fy;
             total += w;
             if (w > 0.0 && ax.is_owned(gx) && ay.is_owned(gy))
-                st.push_back({gx - ax.offset, gy - ay.offset, w,
-                              1.0 / (ax.volume_width(kx) * ay.volume_width(ky))});
+                st.push_back({gx - ax.offset, gy - ay.offset, w, 1.0 / (ax.volume_width(kx) * ay.volume_width(ky))});
         }
     if (total > 0.0)
         for (auto& p : st) p.weight /= total;
@@ -126,8 +123,8 @@ std::vector<double> interpolate(const Grid& grid, const std::vector<Stencil>& st
     return values;
 }
 
-std::vector<Vec2> interpolate_velocity(const Grid& grid, const std::vector<Stencil>& su,
-                                       const std::vector<Stencil>& sv, const Velocity& vel) {
+std::vector<Vec2> interpolate_velocity(const Grid& grid, const std::vector<Stencil>& su, const std::vector<Stencil>& sv,
+                                       const Velocity& vel) {
     const std::size_t n = su.size();
     std::vector<double> sums(2 * n, 0.0);
     for (std::size_t l = 0; l < n; ++l) {

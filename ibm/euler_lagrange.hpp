@@ -24,9 +24,9 @@ namespace chute {
 enum class Staggering { u_face, v_face, cell };
 
 struct StencilPoint {
-    int i, j;             // local indices of an owned point
-    double weight;        // w(x, X)
-    double inv_volume;    // 1 / V(x)
+    int i, j;           // local indices of an owned point
+    double weight;      // w(x, X)
+    double inv_volume;  // 1 / V(x)
 };
 using Stencil = std::vector<StencilPoint>;
 
@@ -37,8 +37,8 @@ std::vector<Stencil> bilinear_stencils(const Grid& grid, Staggering s, const std
 // Interpolated values at every point, on every rank (collective).
 std::vector<double> interpolate(const Grid& grid, const std::vector<Stencil>& stencils, const Field2D& f);
 // Velocity at every point from u-face and v-face stencils: one collective reduction for both components.
-std::vector<Vec2> interpolate_velocity(const Grid& grid, const std::vector<Stencil>& su,
-                                       const std::vector<Stencil>& sv, const Velocity& vel);
+std::vector<Vec2> interpolate_velocity(const Grid& grid, const std::vector<Stencil>& su, const std::vector<Stencil>& sv,
+                                       const Velocity& vel);
 // Adds each point's amount, spread by its stencil, to f (owned points only; not collective).
 void spread(const std::vector<Stencil>& stencils, const std::vector<double>& amounts, Field2D& f);
 

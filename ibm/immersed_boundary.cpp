@@ -8,8 +8,12 @@ ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
 
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings,
                                    std::vector<Body>& bodies)
-    : grid_(grid), settings_(settings), bodies_(bodies), walls_(grid, bodies, settings.image_distance),
-      start_momentum_(bodies.size()), wrench_(bodies.size()) {
+    : grid_(grid),
+      settings_(settings),
+      bodies_(bodies),
+      walls_(grid, bodies, settings.image_distance),
+      start_momentum_(bodies.size()),
+      wrench_(bodies.size()) {
     forcing_ = std::make_unique<DirectForcing>(grid, settings.ibm, bodies_);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         stress_.push_back(std::make_unique<SurfaceStress>(grid, settings.ibm, bodies_[b], forcing_->marker_spacing(b)));

@@ -27,8 +27,7 @@ double ImmersedWall::cell_size(int gi, int gj) const {
 void ImmersedWall::locate() {
     if (bodies_.empty()) return;
     // Body::moves() is true for prescribed and free motion alike.
-    const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(),
-                                       [](const Body& b) { return b.moves(); });
+    const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
     if (located_ && !any_moves) return;
     located_ = true;
 
@@ -54,8 +53,10 @@ void ImmersedWall::locate() {
     for (const BandCell& c : band_) {
         const long long key = 1LL * c.gj * grid_.global_nx() + c.gi;
         auto [it, fresh] = seen.try_emplace(key, merged.size());
-        if (fresh) merged.push_back(c);
-        else if (c.d < merged[it->second].d) merged[it->second] = c;
+        if (fresh)
+            merged.push_back(c);
+        else if (c.d < merged[it->second].d)
+            merged[it->second] = c;
     }
     std::erase_if(merged, [](const BandCell& c) { return c.d <= -2.0 * c.h; });
     band_ = std::move(merged);
@@ -101,7 +102,8 @@ void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
             if (d <= -2.0 * h || d >= image_cells_ * h) continue;
             // Outward normal: the gradient of the signed distance (central differences).
             const double e = 1e-4 * h;
-            Vec2 n(distance(x + Vec2(e, 0)) - distance(x - Vec2(e, 0)), distance(x + Vec2(0, e)) - distance(x - Vec2(0, e)));
+            Vec2 n(distance(x + Vec2(e, 0)) - distance(x - Vec2(e, 0)),
+                   distance(x + Vec2(0, e)) - distance(x - Vec2(0, e)));
             if (n.norm() == 0.0) continue;
             n.normalize();
             band_.push_back({gi, gj, static_cast<int>(b), d, h, x - d * n, n});

@@ -38,7 +38,7 @@ public:
 
 private:
     struct BandCell {
-        int gi, gj;       // global cell
+        int gi, gj;  // global cell
         int body;
         double d, h;
         Vec2 surface, normal;

@@ -43,7 +43,7 @@ private:
     const Grid& grid_;
     const Body& body_;
     std::array<double, 2> d_;
-    std::vector<Marker> markers_;              // body frame, on the surface
+    std::vector<Marker> markers_;  // body frame, on the surface
     std::vector<Vec2> world_, normal_, probe1_, probe2_;
     std::vector<double> h_, wall_pressure_;
     std::vector<Stencil> p1_, p2_, u1_, u2_, v1_, v2_;

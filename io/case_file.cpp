@@ -47,10 +47,7 @@ std::vector<CaseKey> make_schema() {
                     "its extension."},
 
         {.path = "domain", .type = K::section, .required = true, .meaning = "The rectangle and its grid."},
-        {.path = "domain.<axis>",
-         .type = K::section,
-         .required = true,
-         .meaning = "Grid lines along x or along y."},
+        {.path = "domain.<axis>", .type = K::section, .required = true, .meaning = "Grid lines along x or along y."},
         {.path = "domain.<axis>.start",
          .type = K::number,
          .required = true,
@@ -486,9 +483,10 @@ std::vector<CaseKey> make_schema() {
          .default_value = "0.3",
          .min = at_least(0.0),
          .max = at_most(1.0),
-         .meaning = "Markers of closed outlines moved this many cells inside the surface, to offset the "
-                    "thickness of the diffuse interface (Breugem 2012, 0.3 with the roma3 kernel). 0.3 puts the DFG 2D-1 "
-                    "drag in the published band at 40 cells per diameter (docs/validation.md)."},
+         .meaning =
+             "Markers of closed outlines moved this many cells inside the surface, to offset the "
+             "thickness of the diffuse interface (Breugem 2012, 0.3 with the roma3 kernel). 0.3 puts the DFG 2D-1 "
+             "drag in the published band at 40 cells per diameter (docs/validation.md)."},
         {.path = "numerics.ibm.stress_probes",
          .type = K::vector2,
          .default_value = "[1.5, 2.5]",
@@ -504,7 +502,9 @@ std::vector<CaseKey> make_schema() {
                     "rho_f V dU/dt is added to both sides, so light bodies (rho_s/rho_f near or below 1) stay "
                     "stable with an explicit coupling. It cancels at convergence; 0 switches it off."},
 
-        {.path = "contact", .type = K::section, .meaning = "Impacts of free bodies on planes and on wall or slip sides of the domain."},
+        {.path = "contact",
+         .type = K::section,
+         .meaning = "Impacts of free bodies on planes and on wall or slip sides of the domain."},
         {.path = "contact.law",
          .type = K::choice,
          .default_value = "lumped",
@@ -693,10 +693,7 @@ std::vector<CaseKey> make_schema() {
          .default_value = "[]",
          .units = "m",
          .meaning = "Points [x, y] sampled into the time series; each must lie inside the domain."},
-        {.path = "output.plots",
-         .type = K::boolean,
-         .default_value = "true",
-         .meaning = "Write plots of the results."},
+        {.path = "output.plots", .type = K::boolean, .default_value = "true", .meaning = "Write plots of the results."},
     };
 }
 
@@ -744,9 +741,7 @@ std::string join(std::string_view parent, std::string_view leaf) {
     return parent.empty() ? std::string(leaf) : std::string(parent) + "." + std::string(leaf);
 }
 
-std::string indexed(std::string_view path, std::size_t i) {
-    return std::string(path) + "[" + std::to_string(i) + "]";
-}
+std::string indexed(std::string_view path, std::size_t i) { return std::string(path) + "[" + std::to_string(i) + "]"; }
 
 // Does the concrete path ("boundaries.left.type") match the schema pattern ("boundaries.<side>.type")?
 bool segment_matches(std::string_view pattern, std::string_view name) {
@@ -859,8 +854,8 @@ std::string describe(const YAML::Node& n) {
 std::string range_text(const CaseKey& k, bool in_sentence) {
     std::string r;
     if (k.min && k.max)
-        r = std::string(in_sentence ? "in " : "") + (k.min->inclusive ? "[" : "(") + fmt(k.min->value) +
-            ", " + fmt(k.max->value) + (k.max->inclusive ? "]" : ")");
+        r = std::string(in_sentence ? "in " : "") + (k.min->inclusive ? "[" : "(") + fmt(k.min->value) + ", " +
+            fmt(k.max->value) + (k.max->inclusive ? "]" : ")");
     else if (k.min)
         r = (k.min->inclusive ? ">= " : "> ") + fmt(k.min->value);
     else if (k.max)
@@ -874,8 +869,7 @@ E to_enum(std::string_view path, const std::string& value,
           std::initializer_list<std::pair<std::string_view, E>> table) {
     for (const auto& [name, e] : table)
         if (name == value) return e;
-    throw std::logic_error("case_file: choice '" + value + "' of " + std::string(path) +
-                           " has no enum value");
+    throw std::logic_error("case_file: choice '" + value + "' of " + std::string(path) + " has no enum value");
 }
 
 YAML::Node load_yaml(const std::string& text, const std::string& file) {
@@ -884,8 +878,7 @@ YAML::Node load_yaml(const std::string& text, const std::string& file) {
     } catch (const YAML::Exception& e) {
         std::string where = file.empty() ? "" : file + ", ";
         if (!e.mark.is_null())
-            where +=
-                "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1);
+            where += "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1);
         throw CaseError(where + ": YAML syntax error: " + e.msg);
     }
 }
@@ -893,14 +886,13 @@ YAML::Node load_yaml(const std::string& text, const std::string& file) {
 // ---- the reader ------------------------------------------------------------------------------------
 
 class Reader {
-  public:
+public:
     Reader(std::string file, std::string default_name)
         : file_(std::move(file)), default_name_(std::move(default_name)) {}
 
     void add_document(const YAML::Node& root) {
         if (!root.IsDefined() || root.IsNull()) return;  // an empty file: the required keys are missing
-        if (!root.IsMap())
-            fail("", "a case is a mapping of keys (key: value lines), got " + describe(root), &root);
+        if (!root.IsMap()) fail("", "a case is a mapping of keys (key: value lines), got " + describe(root), &root);
         flatten(root, "");
     }
 
@@ -929,9 +921,8 @@ class Reader {
             throw CaseError(where + ": " + path + ": YAML syntax error in the value: " + e.msg);
         }
         // The new value replaces the old one and everything under it.
-        std::erase_if(entries_, [&](const auto& entry) {
-            return entry.first == path || entry.first.starts_with(path + ".");
-        });
+        std::erase_if(entries_,
+                      [&](const auto& entry) { return entry.first == path || entry.first.starts_with(path + "."); });
         entries_[path] = {value, YAML::Mark::null_mark(), text};
         if (find_key(path)->type == KeyType::section) flatten_section(value, path);
     }
@@ -943,8 +934,7 @@ class Reader {
         c.name = present("name") ? string("name") : default_name_;
         if (c.name.empty()) fail("name", "must not be empty");
         if (c.name.find_first_of("/\\") != std::string::npos)
-            fail("name",
-                 "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
+            fail("name", "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
 
         read_axis("domain.x", c.x);
         read_axis("domain.y", c.y);
@@ -954,10 +944,9 @@ class Reader {
         c.viscosity = number("fluid.viscosity");
         c.body_force = vector2("fluid.body_force");
         c.gravity = vector2("gravity");
-        c.contact.law = to_enum<ReboundLaw>("contact.law", choice("contact.law"),
-                                            {{"lumped", ReboundLaw::lumped},
-                                             {"impulse", ReboundLaw::impulse},
-                                             {"soft", ReboundLaw::soft}});
+        c.contact.law = to_enum<ReboundLaw>(
+            "contact.law", choice("contact.law"),
+            {{"lumped", ReboundLaw::lumped}, {"impulse", ReboundLaw::impulse}, {"soft", ReboundLaw::soft}});
         c.contact.normal_restitution = number("contact.normal_restitution");
         c.contact.tangential_restitution = number("contact.tangential_restitution");
         c.contact.rest_speed = number("contact.rest_speed");
@@ -1003,8 +992,7 @@ class Reader {
         c.fixed_dt = number_or_auto("numerics.dt");
         c.max_dt = number("numerics.max_dt");
         if (c.fixed_dt && *c.fixed_dt > c.max_dt)
-            fail("numerics.dt",
-                 "must not exceed numerics.max_dt (" + fmt(c.max_dt) + "), got " + fmt(*c.fixed_dt));
+            fail("numerics.dt", "must not exceed numerics.max_dt (" + fmt(c.max_dt) + "), got " + fmt(*c.fixed_dt));
         c.poisson_tolerance = number("numerics.poisson.tolerance");
         c.poisson_max_iterations = static_cast<int>(integer("numerics.poisson.max_iterations"));
         c.divergence_limit = number("numerics.divergence_limit");
@@ -1023,15 +1011,15 @@ class Reader {
         for (std::size_t i = 0; i < c.probes.size(); ++i) {
             const auto [px, py] = c.probes[i];
             if (px < c.x.start || px > c.x.end || py < c.y.start || py > c.y.end)
-                fail(indexed("output.probes", i),
-                     "point [" + fmt(px) + ", " + fmt(py) + "] lies outside the domain [" + fmt(c.x.start) +
-                         ", " + fmt(c.x.end) + "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]");
+                fail(indexed("output.probes", i), "point [" + fmt(px) + ", " + fmt(py) + "] lies outside the domain [" +
+                                                      fmt(c.x.start) + ", " + fmt(c.x.end) + "] x [" + fmt(c.y.start) +
+                                                      ", " + fmt(c.y.end) + "]");
         }
         c.plots = boolean("output.plots");
         return c;
     }
 
-  private:
+private:
     struct Entry {
         YAML::Node node;
         YAML::Mark key_mark;  // where the key itself is written (null: made by a --set)
@@ -1051,9 +1039,7 @@ class Reader {
             if (!find_key(path)) fail(path, "unknown key" + unknown_key_hint(path), &key);
             if (const auto old = entries_.find(path); old != entries_.end()) {
                 const YAML::Mark m = old->second.key_mark;
-                fail(path,
-                     "given twice" +
-                         (m.is_null() ? "" : " (first on line " + std::to_string(m.line + 1) + ")"),
+                fail(path, "given twice" + (m.is_null() ? "" : " (first on line " + std::to_string(m.line + 1) + ")"),
                      &key);
             }
             const std::string origin = origin_of(section);
@@ -1093,16 +1079,13 @@ class Reader {
         else if (e)
             mark = e->key_mark;
         std::string s = file_;
-        if (!mark.is_null())
-            s += (s.empty() ? "" : ", ") + std::string("line ") + std::to_string(mark.line + 1);
+        if (!mark.is_null()) s += (s.empty() ? "" : ", ") + std::string("line ") + std::to_string(mark.line + 1);
         return s;
     }
 
-    [[noreturn]] void fail(std::string_view path, const std::string& reason,
-                           const YAML::Node* node = nullptr) const {
+    [[noreturn]] void fail(std::string_view path, const std::string& reason, const YAML::Node* node = nullptr) const {
         const std::string w = where(path, node);
-        throw CaseError((w.empty() ? "" : w + ": ") + (path.empty() ? "" : std::string(path) + ": ") +
-                        reason);
+        throw CaseError((w.empty() ? "" : w + ": ") + (path.empty() ? "" : std::string(path) + ": ") + reason);
     }
 
     bool present(std::string_view path) const { return entries_.contains(path); }
@@ -1125,21 +1108,19 @@ class Reader {
                     bool applies = true;
                     if (!k.when_key.empty()) {
                         condition = choice(join(section, k.when_key));
-                        applies = std::find(k.when_values.begin(), k.when_values.end(), condition) !=
-                                  k.when_values.end();
+                        applies =
+                            std::find(k.when_values.begin(), k.when_values.end(), condition) != k.when_values.end();
                     }
                     if (present(path) && !applies)
-                        fail(path, "not used when " + std::string(k.when_key) + " is '" + condition +
-                                       "' (only with " + std::string(k.when_key) + ": " +
-                                       list(k.when_values, " or ") + ")");
+                        fail(path, "not used when " + std::string(k.when_key) + " is '" + condition + "' (only with " +
+                                       std::string(k.when_key) + ": " + list(k.when_values, " or ") + ")");
                     if (!present(path) && applies && k.required)
-                        fail(path,
-                             "missing required key (" +
-                                 (k.type == KeyType::choice ? "one of " + list(k.choices) : gist(k.meaning)) +
-                                 (k.when_key.empty() ? ""
-                                                     : "; needed when " + std::string(k.when_key) + " is '" +
-                                                           condition + "'") +
-                                 ")");
+                        fail(path, "missing required key (" +
+                                       (k.type == KeyType::choice ? "one of " + list(k.choices) : gist(k.meaning)) +
+                                       (k.when_key.empty()
+                                            ? ""
+                                            : "; needed when " + std::string(k.when_key) + " is '" + condition + "'") +
+                                       ")");
                 }
             }
         }
@@ -1157,8 +1138,7 @@ class Reader {
     YAML::Node node(std::string_view path, const CaseKey& k) const {
         if (const auto it = entries_.find(path); it != entries_.end()) return it->second.node;
         if (k.default_value.empty())
-            throw std::logic_error("case_file: '" + std::string(path) +
-                                   "' read with no value and no default");
+            throw std::logic_error("case_file: '" + std::string(path) + "' read with no value and no default");
         return YAML::Load(std::string(k.default_value));
     }
 
@@ -1190,8 +1170,7 @@ class Reader {
 
     // A list of exactly 2 items (`what`, e.g. "2 numbers like [1, 0]"), each read by `item`.
     template <class T, class Item>
-    std::array<T, 2> read_pair(std::string_view path, const YAML::Node& n, const std::string& what,
-                               Item item) const {
+    std::array<T, 2> read_pair(std::string_view path, const YAML::Node& n, const std::string& what, Item item) const {
         if (!n.IsSequence()) fail(path, "expected " + what + ", got " + describe(n), &n);
         if (n.size() != 2)
             fail(path,
@@ -1242,9 +1221,8 @@ class Reader {
 
     std::array<double, 2> vector2(std::string_view path) const {
         const CaseKey& k = key(path, KeyType::vector2);
-        return read_pair<double>(
-            path, node(path, k), "a list of 2 numbers like [1, 0]",
-            [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); });
+        return read_pair<double>(path, node(path, k), "a list of 2 numbers like [1, 0]",
+                                 [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); });
     }
 
     std::array<int, 2> integer_vector2(std::string_view path) const {
@@ -1257,8 +1235,7 @@ class Reader {
     std::vector<double> number_list(std::string_view path) const {
         const CaseKey& k = key(path, KeyType::number_list);
         const YAML::Node n = node(path, k);
-        if (!n.IsSequence())
-            fail(path, "expected a list of numbers like [0, 0.5, 1], got " + describe(n), &n);
+        if (!n.IsSequence()) fail(path, "expected a list of numbers like [0, 0.5, 1], got " + describe(n), &n);
         std::vector<double> v;
         for (const auto& element : n) v.push_back(to_number(indexed(path, v.size()), element, k));
         return v;
@@ -1267,13 +1244,12 @@ class Reader {
     std::vector<std::array<double, 2>> point_list(std::string_view path) const {
         const CaseKey& k = key(path, KeyType::point_list);
         const YAML::Node n = node(path, k);
-        if (!n.IsSequence())
-            fail(path, "expected a list of points like [[0.5, 0.5]], got " + describe(n), &n);
+        if (!n.IsSequence()) fail(path, "expected a list of points like [[0.5, 0.5]], got " + describe(n), &n);
         std::vector<std::array<double, 2>> v;
         for (const auto& element : n)
-            v.push_back(read_pair<double>(
-                indexed(path, v.size()), element, "a point [x, y] like [0.5, 0.5]",
-                [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); }));
+            v.push_back(
+                read_pair<double>(indexed(path, v.size()), element, "a point [x, y] like [0.5, 0.5]",
+                                  [&](const std::string& p, const YAML::Node& e) { return to_number(p, e, k); }));
         return v;
     }
 
@@ -1297,12 +1273,11 @@ class Reader {
         if (a.spacing == "lines") {
             a.lines = number_list(p + ".lines");
             if (a.lines.size() < 3)
-                fail(p + ".lines",
-                     "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
+                fail(p + ".lines", "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
             for (std::size_t i = 1; i < a.lines.size(); ++i)
                 if (!(a.lines[i] > a.lines[i - 1]))
-                    fail(indexed(p + ".lines", i), "lines must be strictly increasing, got " +
-                                                       fmt(a.lines[i]) + " after " + fmt(a.lines[i - 1]));
+                    fail(indexed(p + ".lines", i),
+                         "lines must be strictly increasing, got " + fmt(a.lines[i]) + " after " + fmt(a.lines[i - 1]));
             a.start = a.lines.front();
             a.end = a.lines.back();
             a.cells = static_cast<int>(a.lines.size()) - 1;
@@ -1310,16 +1285,18 @@ class Reader {
             a.start = number(p + ".start");
             a.end = number(p + ".end");
             if (!(a.end > a.start))
-                fail(p + ".end",
-                     "must be greater than " + p + ".start (" + fmt(a.start) + "), got " + fmt(a.end));
+                fail(p + ".end", "must be greater than " + p + ".start (" + fmt(a.start) + "), got " + fmt(a.end));
             if (a.spacing == "clustered") {
                 a.core = vector2(p + ".core");
                 a.core_cells = static_cast<int>(integer(p + ".core_cells"));
                 if (!(a.core[0] >= a.start && a.core[1] <= a.end && a.core[1] > a.core[0]))
                     fail(p + ".core", "the window must lie in [start, end] = [" + fmt(a.start) + ", " + fmt(a.end) +
                                           "] with to > from, got [" + fmt(a.core[0]) + ", " + fmt(a.core[1]) + "]");
-                if (!(a.ratio >= 1.0)) fail(p + ".ratio", "clustered cells grow away from the window: ratio >= 1, got " + fmt(a.ratio));
-                a.cells = static_cast<int>(clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio).size()) - 1;
+                if (!(a.ratio >= 1.0))
+                    fail(p + ".ratio", "clustered cells grow away from the window: ratio >= 1, got " + fmt(a.ratio));
+                a.cells = static_cast<int>(
+                              clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio).size()) -
+                          1;
             } else {
                 a.cells = static_cast<int>(integer(p + ".cells"));
             }
@@ -1335,15 +1312,14 @@ class Reader {
                                         {"outflow", BoundaryType::outflow},
                                         {"periodic", BoundaryType::periodic}});
         b.velocity = vector2(p + ".velocity");
-        b.profile = to_enum<InflowProfile>(
-            p + ".profile", choice(p + ".profile"),
-            {{"uniform", InflowProfile::uniform}, {"parabolic", InflowProfile::parabolic}});
-        b.outflow = to_enum<OutflowKind>(
-            p + ".kind", choice(p + ".kind"),
-            {{"convective", OutflowKind::convective}, {"zero_stress", OutflowKind::zero_stress}});
+        b.profile =
+            to_enum<InflowProfile>(p + ".profile", choice(p + ".profile"),
+                                   {{"uniform", InflowProfile::uniform}, {"parabolic", InflowProfile::parabolic}});
+        b.outflow =
+            to_enum<OutflowKind>(p + ".kind", choice(p + ".kind"),
+                                 {{"convective", OutflowKind::convective}, {"zero_stress", OutflowKind::zero_stress}});
         if (present(p + ".peak")) b.peak = number(p + ".peak");
-        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::parabolic &&
-            present(p + ".velocity"))
+        if (b.type == BoundaryType::inflow && b.profile == InflowProfile::parabolic && present(p + ".velocity"))
             fail(p + ".velocity", "not used with profile: parabolic (the peak sets the inflow)");
 
         const int normal = s < 2 ? 0 : 1;               // velocity component normal to this side
@@ -1358,8 +1334,8 @@ class Reader {
                      "missing required key (an inflow with profile: uniform needs its velocity; or "
                      "use profile: parabolic with a peak)");
             if (!(inward * b.velocity[normal] > 0.0))
-                fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " +
-                                          component + " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
+                fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " + component +
+                                          " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
                                           fmt(b.velocity[normal]));
         }
     }
@@ -1388,8 +1364,8 @@ class Reader {
                                           {"polygon", BodyShape::polygon},
                                           {"plane", BodyShape::plane},
                                           {"segment", BodyShape::segment}});
-            const bool closed = b.shape == BodyShape::circle || b.shape == BodyShape::rectangle ||
-                                b.shape == BodyShape::polygon;
+            const bool closed =
+                b.shape == BodyShape::circle || b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon;
             std::vector<std::array<double, 2>> extent;  // points that must lie in the domain
             const std::string where_key = p + (b.shape == BodyShape::plane     ? ".point"
                                                : b.shape == BodyShape::segment ? ".from"
@@ -1424,8 +1400,8 @@ class Reader {
                 case BodyShape::polygon: {
                     b.vertices = point_list(p + ".vertices");
                     if (b.vertices.size() < 3)
-                        fail(p + ".vertices", "a polygon needs at least 3 corners, got " +
-                                                  std::to_string(b.vertices.size()));
+                        fail(p + ".vertices",
+                             "a polygon needs at least 3 corners, got " + std::to_string(b.vertices.size()));
                     double a2 = 0.0, ymin = 1e300, ymax = -1e300;
                     for (std::size_t k = 0; k < b.vertices.size(); ++k) {
                         const auto& v = b.vertices[k];
@@ -1454,8 +1430,8 @@ class Reader {
             for (const auto& [x, y] : extent)
                 if (x < c.x.start || x > c.x.end || y < c.y.start || y > c.y.end)
                     fail(where_key, "the body reaches outside the domain [" + fmt(c.x.start) + ", " + fmt(c.x.end) +
-                                        "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]: point [" + fmt(x) +
-                                        ", " + fmt(y) + "]");
+                                        "] x [" + fmt(c.y.start) + ", " + fmt(c.y.end) + "]: point [" + fmt(x) + ", " +
+                                        fmt(y) + "]");
 
             const std::string m = p + ".motion";
             b.motion.type = to_enum<MotionType>(m + ".type", choice(m + ".type"),
@@ -1483,9 +1459,12 @@ class Reader {
             }
 
             b.reference_velocity = number(p + ".reference.velocity");
-            if (present(p + ".reference.length")) b.reference_length = number(p + ".reference.length");
-            else if (b.shape == BodyShape::plane) b.reference_length = std::hypot(c.x.end - c.x.start, c.y.end - c.y.start);
-            else b.reference_length = height;
+            if (present(p + ".reference.length"))
+                b.reference_length = number(p + ".reference.length");
+            else if (b.shape == BodyShape::plane)
+                b.reference_length = std::hypot(c.x.end - c.x.start, c.y.end - c.y.start);
+            else
+                b.reference_length = height;
             if (!(b.reference_length > 0.0))
                 fail(p + ".reference.length", "the default (the body's extent across x) is 0: give a length");
             c.bodies.push_back(std::move(b));

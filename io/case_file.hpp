@@ -23,7 +23,7 @@ namespace chute {
 
 // A mistake in a case file or in a --set override.
 class CaseError : public std::runtime_error {
-  public:
+public:
     using std::runtime_error::runtime_error;
 };
 

@@ -17,16 +17,13 @@ constexpr const char* kFormat = "chute checkpoint 1";
 
 std::string field_dataset(const std::string& name) { return "fields/" + name; }
 
-std::string grid_size(std::size_t nx, std::size_t ny) {
-    return std::to_string(nx) + "x" + std::to_string(ny);
-}
+std::string grid_size(std::size_t nx, std::size_t ny) { return std::to_string(nx) + "x" + std::to_string(ny); }
 
 // Step of a file named checkpoint_<digits>.h5, or -1.
 long checkpoint_step(const std::filesystem::path& p) {
     const std::string name = p.filename().string();
     const std::string prefix = "checkpoint_", suffix = ".h5";
-    if (name.size() <= prefix.size() + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
-        return -1;
+    if (name.size() <= prefix.size() + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix)) return -1;
     const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
     if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) return -1;
     return std::stol(digits);
@@ -86,8 +83,8 @@ std::optional<std::vector<double>> read_checkpoint_array(const std::filesystem::
 std::pair<std::vector<double>, std::vector<double>> read_checkpoint_lines(const std::filesystem::path& path) {
     Hdf5File file = Hdf5File::open_read(path);
     if (!file.has_attribute("/", "format") || file.string_attribute("/", "format") != kFormat)
-        throw std::runtime_error("checkpoint '" + path.string() + "' is not a Chute checkpoint (no format '" +
-                                 kFormat + "')");
+        throw std::runtime_error("checkpoint '" + path.string() + "' is not a Chute checkpoint (no format '" + kFormat +
+                                 "')");
     std::vector<double> x = file.read("grid/x_lines");
     std::vector<double> y = file.read("grid/y_lines");
     if (x.size() < 2 || y.size() < 2)
@@ -101,11 +98,9 @@ CheckpointHeader read_checkpoint(const Grid& grid, const std::filesystem::path& 
     run_on_all(grid.comm(), [&] {
         const auto [x, y] = read_checkpoint_lines(path);
         const std::size_t nx = x.size() - 1, ny = y.size() - 1;
-        if (nx != static_cast<std::size_t>(grid.global_nx()) ||
-            ny != static_cast<std::size_t>(grid.global_ny()))
-            throw std::runtime_error("checkpoint '" + path.string() + "': checkpoint grid " +
-                                     grid_size(nx, ny) + " does not match case grid " +
-                                     grid_size(grid.global_nx(), grid.global_ny()));
+        if (nx != static_cast<std::size_t>(grid.global_nx()) || ny != static_cast<std::size_t>(grid.global_ny()))
+            throw std::runtime_error("checkpoint '" + path.string() + "': checkpoint grid " + grid_size(nx, ny) +
+                                     " does not match case grid " + grid_size(grid.global_nx(), grid.global_ny()));
         Hdf5File file = Hdf5File::open_read(path);
         header.step = static_cast<long>(file.int_attribute("/", "step"));
         header.time = file.double_attribute("/", "time");
@@ -122,13 +117,12 @@ CheckpointHeader read_checkpoint(const Grid& grid, const std::filesystem::path& 
             const std::size_t rows = ny + f.extra_y, cols = nx + f.extra_x;
             if (shape.size() != 2 || shape[0] != rows || shape[1] != cols)
                 throw std::runtime_error("checkpoint '" + path.string() + "': field '" + f.name +
-                                         "' does not have the expected shape " + std::to_string(rows) +
-                                         " x " + std::to_string(cols));
+                                         "' does not have the expected shape " + std::to_string(rows) + " x " +
+                                         std::to_string(cols));
             const int w = grid.nx() + (f.extra_x > 0 && grid.touches(Side::right) ? 1 : 0);
             const int h = grid.ny() + (f.extra_y > 0 && grid.touches(Side::top) ? 1 : 0);
-            const std::vector<double> block =
-                file.read_block(name, grid.ly().offset, grid.lx().offset, static_cast<std::size_t>(h),
-                                static_cast<std::size_t>(w));
+            const std::vector<double> block = file.read_block(name, grid.ly().offset, grid.lx().offset,
+                                                              static_cast<std::size_t>(h), static_cast<std::size_t>(w));
             Field2D& out = *f.field;
             if (out.nx() != grid.nx() || out.ny() != grid.ny())
                 throw std::invalid_argument("read_checkpoint: field '" + f.name + "' does not fit the patch");

@@ -7,8 +7,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "gather.hpp"
 #include "exact_text.hpp"
+#include "gather.hpp"
 #include "hdf5_file.hpp"
 
 namespace chute {
@@ -44,8 +44,7 @@ void check_names(const std::vector<NamedField>& fields) {
         if (f.name.empty() || f.name == "x" || f.name == "y" || f.name.find('/') != std::string::npos)
             throw std::invalid_argument("FieldOutput: field name '" + f.name +
                                         "' is not allowed (empty, 'x', 'y' or containing '/')");
-        if (!seen.insert(f.name).second)
-            throw std::invalid_argument("FieldOutput: field '" + f.name + "' given twice");
+        if (!seen.insert(f.name).second) throw std::invalid_argument("FieldOutput: field '" + f.name + "' given twice");
         if (f.field == nullptr) throw std::invalid_argument("FieldOutput: field '" + f.name + "' is null");
     }
 }
@@ -82,8 +81,7 @@ void FieldOutput::index_existing(long restart_step) {
             for (const std::string& member : file.members("/")) {
                 if (member == "x" || member == "y") continue;
                 const std::vector<std::size_t> shape = file.shape(member);
-                if (shape.size() == 2 && shape[0] == y[0] - 1 && shape[1] == x[0] - 1)
-                    snap.names.push_back(member);
+                if (shape.size() == 2 && shape[0] == y[0] - 1 && shape[1] == x[0] - 1) snap.names.push_back(member);
             }
             snapshots_.push_back(std::move(snap));
         } catch (const std::runtime_error&) {
@@ -113,8 +111,7 @@ void FieldOutput::write(long step, double time, const std::vector<NamedField>& f
             file.write("x", grid_.x_axis().lines());
             file.write("y", grid_.y_axis().lines());
             for (std::size_t k = 0; k < fields.size(); ++k)
-                file.write(fields[k].name, global[k], static_cast<std::size_t>(ny),
-                           static_cast<std::size_t>(nx));
+                file.write(fields[k].name, global[k], static_cast<std::size_t>(ny), static_cast<std::size_t>(nx));
             file.close();
         });
 
@@ -152,8 +149,7 @@ void FieldOutput::write_xdmf() const {
                 const std::string n = xml_escape(name);
                 out << "        <Attribute Name=\"" << n << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
                     << "          <DataItem Dimensions=\"" << cells
-                    << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/" << n
-                    << "</DataItem>\n"
+                    << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/" << n << "</DataItem>\n"
                     << "        </Attribute>\n";
             }
             out << "      </Grid>\n";

@@ -25,7 +25,7 @@ struct NamedField {
 };
 
 class FieldOutput {
-  public:
+public:
     // Collective: rank 0 creates out_dir if needed. restart_step >= 0 (a run continued from a checkpoint):
     // the snapshots already in out_dir with step <= restart_step are listed in fields.xdmf too, so the
     // index covers the whole history; later ones (from the run that stopped) are left out.
@@ -38,7 +38,7 @@ class FieldOutput {
     std::filesystem::path snapshot_path(long step) const;
     std::filesystem::path xdmf_path() const { return out_dir_ / "fields.xdmf"; }
 
-  private:
+private:
     struct Snapshot {
         std::string file;  // relative to out_dir
         long step;

@@ -11,8 +11,8 @@ namespace {
 void check_field(const char* who, const Grid& grid, const Field2D& f, int extra_x, int extra_y) {
     if (f.nx() != grid.nx() || f.ny() != grid.ny())
         throw std::invalid_argument(std::string(who) + ": field of " + std::to_string(f.nx()) + " x " +
-                                    std::to_string(f.ny()) + " cells on a patch of " +
-                                    std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()));
+                                    std::to_string(f.ny()) + " cells on a patch of " + std::to_string(grid.nx()) +
+                                    " x " + std::to_string(grid.ny()));
     if (extra_x < 0 || extra_x > 1 || extra_y < 0 || extra_y > 1)
         throw std::invalid_argument(std::string(who) + ": extra_x and extra_y must be 0 or 1");
 }
@@ -56,8 +56,8 @@ std::vector<double> gather_global(const Grid& grid, const Field2D& f, int extra_
         }
     }
     std::vector<double> recv(root ? total : 0);
-    MPI_Gatherv(send.data(), static_cast<int>(send.size()), MPI_DOUBLE, recv.data(), counts.data(),
-                displs.data(), MPI_DOUBLE, 0, comm);
+    MPI_Gatherv(send.data(), static_cast<int>(send.size()), MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
+                MPI_DOUBLE, 0, comm);
     if (!root) return {};
 
     const int gw = grid.global_nx() + extra_x;
@@ -68,8 +68,7 @@ std::vector<double> gather_global(const Grid& grid, const Field2D& f, int extra_
         const double* src = recv.data() + displs[r];
         for (int j = 0; j < h; ++j)
             for (int i = 0; i < w; ++i)
-                global[static_cast<std::size_t>(j0 + j) * gw + (i0 + i)] =
-                    src[static_cast<std::size_t>(j) * w + i];
+                global[static_cast<std::size_t>(j0 + j) * gw + (i0 + i)] = src[static_cast<std::size_t>(j) * w + i];
     }
     // Periodic axes: the face at the far end is face 0.
     if (extra_x > 0 && grid.x_axis().periodic())
@@ -80,15 +79,13 @@ std::vector<double> gather_global(const Grid& grid, const Field2D& f, int extra_
     return global;
 }
 
-void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D& f, int extra_x,
-                    int extra_y) {
+void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D& f, int extra_x, int extra_y) {
     check_field("scatter_global", grid, f, extra_x, extra_y);
     const int gw = grid.global_nx() + extra_x;
     const int gh = grid.global_ny() + extra_y;
     if (global.size() != static_cast<std::size_t>(gw) * gh)
         throw std::invalid_argument("scatter_global: global array of " + std::to_string(global.size()) +
-                                    " values, expected " + std::to_string(gh) + " rows of " +
-                                    std::to_string(gw));
+                                    " values, expected " + std::to_string(gh) + " rows of " + std::to_string(gw));
     const Block b = own_block(grid, extra_x, extra_y, true);
     for (int j = 0; j < b.h; ++j)
         for (int i = 0; i < b.w; ++i) f(i, j) = global[static_cast<std::size_t>(b.j0 + j) * gw + (b.i0 + i)];

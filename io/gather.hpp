@@ -20,8 +20,7 @@ std::vector<double> gather_global(const Grid& grid, const Field2D& f, int extra_
 
 // Not collective: each rank copies its own cells from `global` (held by every rank), and, where it touches
 // Side::right (Side::top), the extra column (row) into its ghost slot i = nx (j = ny).
-void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D& f, int extra_x = 0,
-                    int extra_y = 0);
+void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D& f, int extra_x = 0, int extra_y = 0);
 
 // Error agreement for collective I/O, so that no rank is left waiting in a collective call when another
 // has thrown. Both are collective over `comm`; if `work` throws anywhere, every rank throws a

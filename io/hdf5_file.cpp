@@ -13,7 +13,7 @@ namespace {
 
 // Silences HDF5's automatic error printing for the lifetime of the guard (the exception carries the message).
 class QuietErrors {
-  public:
+public:
     QuietErrors() {
         H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -22,14 +22,14 @@ class QuietErrors {
     QuietErrors(const QuietErrors&) = delete;
     QuietErrors& operator=(const QuietErrors&) = delete;
 
-  private:
+private:
     H5E_auto2_t func_ = nullptr;
     void* data_ = nullptr;
 };
 
 // Closes an HDF5 identifier when it goes out of scope.
 class Handle {
-  public:
+public:
     Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), closer_(closer) {}
     ~Handle() {
         if (id_ >= 0) closer_(id_);
@@ -39,7 +39,7 @@ class Handle {
     hid_t get() const { return id_; }
     bool ok() const { return id_ >= 0; }
 
-  private:
+private:
     hid_t id_;
     herr_t (*closer_)(hid_t);
 };
@@ -50,8 +50,7 @@ std::string hdf5_reason() {
     H5Ewalk2(
         H5E_DEFAULT, H5E_WALK_UPWARD,
         [](unsigned n, const H5E_error2_t* err, void* client) -> herr_t {
-            if (n == 0 && err != nullptr && err->desc != nullptr)
-                *static_cast<std::string*>(client) = err->desc;
+            if (n == 0 && err != nullptr && err->desc != nullptr) *static_cast<std::string*>(client) = err->desc;
             return 0;
         },
         &reason);
@@ -73,8 +72,7 @@ Hdf5File Hdf5File::create(const std::filesystem::path& path) {
     const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (id < 0) {
         const std::string reason = hdf5_reason();
-        throw std::runtime_error("HDF5: cannot create file " + quoted(path) +
-                                 (reason.empty() ? "" : ": " + reason));
+        throw std::runtime_error("HDF5: cannot create file " + quoted(path) + (reason.empty() ? "" : ": " + reason));
     }
     return Hdf5File(id, path);
 }
@@ -124,8 +122,7 @@ void Hdf5File::close() {
 
 void Hdf5File::fail(const std::string& what) const {
     const std::string reason = hdf5_reason();
-    throw std::runtime_error("HDF5 file " + quoted(path_) + ": " + what +
-                             (reason.empty() ? "" : " (" + reason + ")"));
+    throw std::runtime_error("HDF5 file " + quoted(path_) + ": " + what + (reason.empty() ? "" : " (" + reason + ")"));
 }
 
 bool Hdf5File::has(const std::string& name) const {
@@ -174,9 +171,8 @@ void Hdf5File::write_dataset(const std::string& name, const double* data, int ra
     Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
     if (!lcpl.ok() || H5Pset_create_intermediate_group(lcpl.get(), 1) < 0)
         fail("cannot create a property list for dataset '" + name + "'");
-    Handle set(
-        H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-        H5Dclose);
+    Handle set(H5Dcreate2(id_, name.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose);
     if (!set.ok()) fail("cannot create dataset '" + name + "'");
     hsize_t count = 1;
     for (int k = 0; k < rank; ++k) count *= dims[k];
@@ -189,16 +185,13 @@ void Hdf5File::write(const std::string& name, std::span<const double> data) {
     write_dataset(name, data.data(), 1, dims);
 }
 
-void Hdf5File::write(const std::string& name, std::span<const double> data, std::size_t rows,
-                     std::size_t cols) {
+void Hdf5File::write(const std::string& name, std::span<const double> data, std::size_t rows, std::size_t cols) {
     check_dims("Hdf5File::write '" + name + "'", rows * cols, data.size());
     const hsize_t dims[2] = {rows, cols};
     write_dataset(name, data.data(), 2, dims);
 }
 
-void Hdf5File::write_double(const std::string& name, double value) {
-    write_dataset(name, &value, 0, nullptr);
-}
+void Hdf5File::write_double(const std::string& name, double value) { write_dataset(name, &value, 0, nullptr); }
 
 void Hdf5File::write_int(const std::string& name, long long value) {
     QuietErrors quiet;
@@ -206,9 +199,8 @@ void Hdf5File::write_int(const std::string& name, long long value) {
     Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
     if (!space.ok() || !lcpl.ok() || H5Pset_create_intermediate_group(lcpl.get(), 1) < 0)
         fail("cannot prepare dataset '" + name + "'");
-    Handle set(
-        H5Dcreate2(id_, name.c_str(), H5T_STD_I64LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-        H5Dclose);
+    Handle set(H5Dcreate2(id_, name.c_str(), H5T_STD_I64LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose);
     if (!set.ok()) fail("cannot create dataset '" + name + "'");
     if (H5Dwrite(set.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) < 0)
         fail("cannot write dataset '" + name + "'");
@@ -241,14 +233,14 @@ std::vector<double> Hdf5File::read(const std::string& name) const {
     return data;
 }
 
-std::vector<double> Hdf5File::read_block(const std::string& name, std::size_t row0, std::size_t col0,
-                                         std::size_t rows, std::size_t cols) const {
+std::vector<double> Hdf5File::read_block(const std::string& name, std::size_t row0, std::size_t col0, std::size_t rows,
+                                         std::size_t cols) const {
     const std::vector<std::size_t> dims = shape(name);
     if (dims.size() != 2) fail("dataset '" + name + "' is not two-dimensional");
     if (row0 + rows > dims[0] || col0 + cols > dims[1])
-        fail("block of " + std::to_string(rows) + " x " + std::to_string(cols) + " at (" +
-             std::to_string(row0) + ", " + std::to_string(col0) + ") lies outside dataset '" + name +
-             "' of shape " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]));
+        fail("block of " + std::to_string(rows) + " x " + std::to_string(cols) + " at (" + std::to_string(row0) + ", " +
+             std::to_string(col0) + ") lies outside dataset '" + name + "' of shape " + std::to_string(dims[0]) +
+             " x " + std::to_string(dims[1]));
     std::vector<double> data(rows * cols);
     if (data.empty()) return data;
     QuietErrors quiet;
@@ -257,12 +249,11 @@ std::vector<double> Hdf5File::read_block(const std::string& name, std::size_t ro
     Handle file_space(H5Dget_space(set.get()), H5Sclose);
     const hsize_t start[2] = {row0, col0};
     const hsize_t count[2] = {rows, cols};
-    if (!file_space.ok() ||
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
+    if (!file_space.ok() || H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
         fail("cannot select a block of dataset '" + name + "'");
     Handle mem_space(H5Screate_simple(2, count, nullptr), H5Sclose);
-    if (!mem_space.ok() || H5Dread(set.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(),
-                                   H5P_DEFAULT, data.data()) < 0)
+    if (!mem_space.ok() ||
+        H5Dread(set.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(), H5P_DEFAULT, data.data()) < 0)
         fail("cannot read dataset '" + name + "'");
     return data;
 }
@@ -283,8 +274,7 @@ long long Hdf5File::read_int(const std::string& name) const {
     return value;
 }
 
-void Hdf5File::write_attribute(const std::string& object, const std::string& name, hid_t type,
-                               const void* value) {
+void Hdf5File::write_attribute(const std::string& object, const std::string& name, hid_t type, const void* value) {
     QuietErrors quiet;
     const std::string what = "attribute '" + name + "' of '" + object + "'";
     const htri_t exists = H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT);
@@ -292,9 +282,9 @@ void Hdf5File::write_attribute(const std::string& object, const std::string& nam
     if (exists > 0 && H5Adelete_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) < 0)
         fail("cannot replace " + what);
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attr(H5Acreate_by_name(id_, object.c_str(), name.c_str(), type, space.get(), H5P_DEFAULT,
-                                  H5P_DEFAULT, H5P_DEFAULT),
-                H5Aclose);
+    Handle attr(
+        H5Acreate_by_name(id_, object.c_str(), name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+        H5Aclose);
     if (!attr.ok()) fail("cannot create " + what);
     if (H5Awrite(attr.get(), type, value) < 0) fail("cannot write " + what);
 }
@@ -307,8 +297,7 @@ void Hdf5File::set_int_attribute(const std::string& object, const std::string& n
     write_attribute(object, name, H5T_NATIVE_LLONG, &value);
 }
 
-void Hdf5File::set_string_attribute(const std::string& object, const std::string& name,
-                                    const std::string& value) {
+void Hdf5File::set_string_attribute(const std::string& object, const std::string& name, const std::string& value) {
     QuietErrors quiet;
     Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
     if (!type.ok() || H5Tset_size(type.get(), value.size() + 1) < 0 ||
@@ -323,8 +312,7 @@ bool Hdf5File::has_attribute(const std::string& object, const std::string& name)
     return H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
-void Hdf5File::read_attribute(const std::string& object, const std::string& name, hid_t mem_type,
-                              void* value) const {
+void Hdf5File::read_attribute(const std::string& object, const std::string& name, hid_t mem_type, void* value) const {
     const std::string what = "attribute '" + name + "' of '" + object + "'";
     if (!has_attribute(object, name)) fail("no " + what);
     QuietErrors quiet;

@@ -17,7 +17,7 @@
 namespace chute {
 
 class Hdf5File {
-  public:
+public:
     // Creates (truncating) a file for writing.
     static Hdf5File create(const std::filesystem::path& path);
     // Opens an existing file read-only; throws "no such file" if it is missing.
@@ -47,8 +47,8 @@ class Hdf5File {
     std::vector<std::size_t> shape(const std::string& name) const;  // empty for a scalar
     std::vector<double> read(const std::string& name) const;        // whole dataset, row-major
     // Rows [row0, row0 + rows) and columns [col0, col0 + cols) of a 2D dataset, row-major.
-    std::vector<double> read_block(const std::string& name, std::size_t row0, std::size_t col0,
-                                   std::size_t rows, std::size_t cols) const;
+    std::vector<double> read_block(const std::string& name, std::size_t row0, std::size_t col0, std::size_t rows,
+                                   std::size_t cols) const;
     double read_double(const std::string& name) const;
     long long read_int(const std::string& name) const;
 
@@ -61,13 +61,12 @@ class Hdf5File {
     long long int_attribute(const std::string& object, const std::string& name) const;
     std::string string_attribute(const std::string& object, const std::string& name) const;
 
-  private:
+private:
     Hdf5File(hid_t id, std::filesystem::path path) : id_(id), path_(std::move(path)) {}
     [[noreturn]] void fail(const std::string& what) const;
     void write_dataset(const std::string& name, const double* data, int rank, const hsize_t* dims);
     void write_attribute(const std::string& object, const std::string& name, hid_t type, const void* value);
-    void read_attribute(const std::string& object, const std::string& name, hid_t mem_type,
-                        void* value) const;
+    void read_attribute(const std::string& object, const std::string& name, hid_t mem_type, void* value) const;
 
     hid_t id_ = H5I_INVALID_HID;
     std::filesystem::path path_;

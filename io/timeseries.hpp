@@ -17,7 +17,7 @@
 namespace chute {
 
 class TimeSeries {
-  public:
+public:
     // `columns` names every column, the first being the time. restart_time < 0: start a new file with the
     // header row. Otherwise keep the rows of the existing file with t <= restart_time (a last line cut
     // short by a crash is dropped), rewrite the file with them atomically, and append after them; with no
@@ -39,7 +39,7 @@ class TimeSeries {
     std::filesystem::path csv_path() const { return out_dir_ / (stem_ + ".csv"); }
     std::filesystem::path hdf5_path() const { return out_dir_ / (stem_ + ".h5"); }
 
-  private:
+private:
     bool root_;
     std::filesystem::path out_dir_;
     std::string stem_;

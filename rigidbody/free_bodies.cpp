@@ -106,9 +106,9 @@ namespace {
 template <class Visit>
 void each_value(Visit&& v, BodyState& s, Vec2& acceleration, double& angular_acceleration, ContactState& c,
                 double* legacy = nullptr) {
-    for (double* x : {&s.centre.x(), &s.centre.y(), &s.angle, &s.velocity.x(), &s.velocity.y(),
-                      &s.angular_velocity, &s.acceleration.x(), &s.acceleration.y(), &s.angular_acceleration,
-                      &acceleration.x(), &acceleration.y(), &angular_acceleration})
+    for (double* x : {&s.centre.x(), &s.centre.y(), &s.angle, &s.velocity.x(), &s.velocity.y(), &s.angular_velocity,
+                      &s.acceleration.x(), &s.acceleration.y(), &s.angular_acceleration, &acceleration.x(),
+                      &acceleration.y(), &angular_acceleration})
         v(*x);
     if (legacy)
         for (int k = 0; k < 3; ++k) v(legacy[k]);

@@ -61,8 +61,8 @@ private:
         std::size_t index = 0;  // in the run's bodies
         RigidInertia inertia;
         double fluid_mass = 0.0, fluid_inertia = 0.0;  // rho_f V and rho_f J depth: the displaced fluid
-        BodyState start;                   // at t^n
-        Vec2 acceleration = Vec2::Zero();  // of the last update: the next prediction
+        BodyState start;                               // at t^n
+        Vec2 acceleration = Vec2::Zero();              // of the last update: the next prediction
         double angular_acceleration = 0.0;
         ContactState contact, contact_at_start;
     };

@@ -27,7 +27,8 @@ int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     const Vec2 v(Y[2], Y[3]);
     const double fluid_mass = m.fluid_density * m.volume;
     const Vec2 w = v - m.current;
-    const Vec2 force = (m.mass - fluid_mass) * m.gravity - 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area * w.norm() * w;
+    const Vec2 force =
+        (m.mass - fluid_mass) * m.gravity - 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area * w.norm() * w;
     const Vec2 a = force / (m.mass + m.added_mass_coefficient * fluid_mass);
     D[0] = v.x();
     D[1] = v.y();
@@ -52,14 +53,16 @@ int gaps(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
 }
 
 void check(int flag, const char* what) {
-    if (flag < 0) throw std::runtime_error(std::string("lumped model: CVODE ") + what + " failed (flag " + std::to_string(flag) + ")");
+    if (flag < 0)
+        throw std::runtime_error(std::string("lumped model: CVODE ") + what + " failed (flag " + std::to_string(flag) +
+                                 ")");
 }
 
 }  // namespace
 
 LumpedTrajectory run_lumped_model(const LumpedModelConfig& model, const Outline& outline, const BodyState& start,
-                                  const std::vector<Obstacle>& obstacles, const ContactConfig& contact,
-                                  double t_end, double output_interval) {
+                                  const std::vector<Obstacle>& obstacles, const ContactConfig& contact, double t_end,
+                                  double output_interval) {
     LumpedTrajectory out;
     Problem problem{model, outline, obstacles, start.angle};
     RigidInertia inertia;  // the lumped block does not turn
@@ -137,10 +140,13 @@ BerangerFreeFall beranger_free_fall(const LumpedModelConfig& m) {
             std::sqrt(2.0 * (m.mass - fluid_mass) * g / (m.fluid_density * m.drag_coefficient * m.frontal_area))};
 }
 
-double BerangerFreeFall::speed(double t) const { return terminal_speed * std::tanh(reduced_gravity * t / terminal_speed); }
+double BerangerFreeFall::speed(double t) const {
+    return terminal_speed * std::tanh(reduced_gravity * t / terminal_speed);
+}
 
 double BerangerFreeFall::distance(double t) const {
-    return terminal_speed * terminal_speed / reduced_gravity * std::log(std::cosh(reduced_gravity * t / terminal_speed));
+    return terminal_speed * terminal_speed / reduced_gravity *
+           std::log(std::cosh(reduced_gravity * t / terminal_speed));
 }
 
 }  // namespace chute

@@ -35,12 +35,12 @@ struct LumpedSample {
 struct LumpedTrajectory {
     std::vector<LumpedSample> samples;  // every output interval, and at each impact (before and after)
     std::vector<ContactEvent> events;
-    bool rests = false;                 // the run ended with the block at rest on an obstacle
+    bool rests = false;  // the run ended with the block at rest on an obstacle
 };
 
 LumpedTrajectory run_lumped_model(const LumpedModelConfig& model, const Outline& outline, const BodyState& start,
-                                  const std::vector<Obstacle>& obstacles, const ContactConfig& contact,
-                                  double t_end, double output_interval);
+                                  const std::vector<Obstacle>& obstacles, const ContactConfig& contact, double t_end,
+                                  double output_interval);
 
 // The Beranger model's free fall from rest in still fluid, in closed form (along g):
 //   v(t) = v_t tanh(g' t / v_t),  s(t) = (v_t^2 / g') ln cosh(g' t / v_t),

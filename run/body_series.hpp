@@ -25,8 +25,8 @@ namespace chute {
 
 class BodySeries {
 public:
-    BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const Carrier& carrier,
-               const CaseConfig& config, double restart_time);
+    BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const Carrier& carrier, const CaseConfig& config,
+               double restart_time);
     void append(double t, const std::vector<BodyForces>& forces);
     void write_hdf5();
 

@@ -9,8 +9,10 @@
 namespace chute {
 
 ContactLog::ContactLog(std::filesystem::path file, double restart_time) : file_(std::move(file)) {
-    text_ = "t,body,obstacle,x,y,x_centre,y_centre,u_before,v_before,omega_before,u_after,v_after,omega_after,normal_restitution,"
-            "tangential_restitution,rests\n";
+    text_ =
+        "t,body,obstacle,x,y,x_centre,y_centre,u_before,v_before,omega_before,u_after,v_after,omega_after,normal_"
+        "restitution,"
+        "tangential_restitution,rests\n";
     if (file_.empty()) return;
     if (restart_time >= 0.0 && std::filesystem::exists(file_)) {
         std::ifstream in(file_);
@@ -26,10 +28,12 @@ void ContactLog::record(const std::vector<ContactEvent>& events) {
     if (file_.empty()) return;
     char row[512];
     for (const ContactEvent& e : events) {
-        std::snprintf(row, sizeof row, "%.12g,%s,%s,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.6g,%.6g,%d\n",
-                      e.time, e.body.c_str(), e.obstacle.c_str(), e.point.x(), e.point.y(), e.centre.x(), e.centre.y(), e.velocity_before.x(),
-                      e.velocity_before.y(), e.angular_velocity_before, e.velocity_after.x(), e.velocity_after.y(),
-                      e.angular_velocity_after, e.normal_restitution, e.tangential_restitution, e.rests ? 1 : 0);
+        std::snprintf(row, sizeof row,
+                      "%.12g,%s,%s,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.6g,%.6g,%d\n", e.time,
+                      e.body.c_str(), e.obstacle.c_str(), e.point.x(), e.point.y(), e.centre.x(), e.centre.y(),
+                      e.velocity_before.x(), e.velocity_before.y(), e.angular_velocity_before, e.velocity_after.x(),
+                      e.velocity_after.y(), e.angular_velocity_after, e.normal_restitution, e.tangential_restitution,
+                      e.rests ? 1 : 0);
         text_ += row;
     }
     write_text_atomically(file_, text_);

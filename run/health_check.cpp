@@ -20,11 +20,15 @@ std::optional<std::string> HealthCheck::problem(const Model& model, const StepSt
         return std::nullopt;
     std::ostringstream msg;
     msg << "run diverged at step " << model.flow().step() << ", t = " << model.flow().time() << ": ";
-    if (turbulence) msg << *turbulence;
-    else if (!std::isfinite(ke)) msg << "kinetic energy is " << ke;
-    else if (dt_collapsed) msg << "the time step fell to " << step.dt << " s, a millionth of the first step's "
-                               << first_dt_ << " s (the velocity is blowing up)";
-    else msg << "max |div u| dt = " << div * step.dt << " exceeds numerics.divergence_limit = " << divergence_limit_;
+    if (turbulence)
+        msg << *turbulence;
+    else if (!std::isfinite(ke))
+        msg << "kinetic energy is " << ke;
+    else if (dt_collapsed)
+        msg << "the time step fell to " << step.dt << " s, a millionth of the first step's " << first_dt_
+            << " s (the velocity is blowing up)";
+    else
+        msg << "max |div u| dt = " << div * step.dt << " exceeds numerics.divergence_limit = " << divergence_limit_;
     msg << " (dt = " << step.dt << "; try a smaller numerics.cfl, a finer grid, or the van_leer scheme).";
     return msg.str();
 }

@@ -29,8 +29,7 @@ std::vector<CheckpointField> checkpoint_fields(Model& model) {
 std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::path& out_dir, int kept) {
     const FlowSolver& s = model.flow();
     const auto path = checkpoint_path(out_dir, s.step());
-    write_checkpoint(s.grid(), path,
-                     {s.step(), s.time(), s.previous_dt(), s.previous_dt(), s.implicit_diffusion()},
+    write_checkpoint(s.grid(), path, {s.step(), s.time(), s.previous_dt(), s.previous_dt(), s.implicit_diffusion()},
                      checkpoint_fields(model), model.free_bodies().checkpoint_arrays());
     prune_checkpoints(out_dir, kept);
     return path;
@@ -42,8 +41,8 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     // Lines may have moved during the run that wrote the checkpoint: take them from the checkpoint.
     auto [xl, yl] = read_checkpoint_lines(checkpoint);
     if (static_cast<int>(xl.size()) != grid.global_nx() + 1 || static_cast<int>(yl.size()) != grid.global_ny() + 1)
-        throw std::runtime_error("checkpoint " + checkpoint.string() + ": grid " + std::to_string(xl.size() - 1) +
-                                 "x" + std::to_string(yl.size() - 1) + " does not match the case grid " +
+        throw std::runtime_error("checkpoint " + checkpoint.string() + ": grid " + std::to_string(xl.size() - 1) + "x" +
+                                 std::to_string(yl.size() - 1) + " does not match the case grid " +
                                  std::to_string(grid.global_nx()) + "x" + std::to_string(grid.global_ny()));
     solver.set_grid_lines(xl, yl);
     const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));

@@ -16,8 +16,8 @@ namespace chute {
 namespace {
 
 std::vector<std::string> timeseries_columns(const CaseConfig& c) {
-    std::vector<std::string> cols = {"t", "step", "dt", "kinetic_energy", "max_divergence", "poisson_iterations",
-                                     "poisson_residual"};
+    std::vector<std::string> cols = {
+        "t", "step", "dt", "kinetic_energy", "max_divergence", "poisson_iterations", "poisson_residual"};
     for (std::size_t k = 0; k < c.probes.size(); ++k)
         for (const char* q : {"u", "v", "p"}) cols.push_back("probe" + std::to_string(k) + "_" + q);
     return cols;
@@ -115,8 +115,12 @@ void RunOutputs::write_checkpoint() {
 void RunOutputs::record(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
     const FlowSolver& flow = model_.flow();
     const Grid& grid = flow.grid();
-    std::vector<double> row = {flow.time(), static_cast<double>(flow.step()), step.dt, health.kinetic_energy,
-                               health.max_divergence, static_cast<double>(step.poisson_iterations),
+    std::vector<double> row = {flow.time(),
+                               static_cast<double>(flow.step()),
+                               step.dt,
+                               health.kinetic_energy,
+                               health.max_divergence,
+                               static_cast<double>(step.poisson_iterations),
                                step.poisson_residual};
     if (probes_.size() > 0) {
         cell_centred_velocity(grid, flow.velocity(), uc_, vc_);

@@ -58,16 +58,20 @@ class Progress {
 public:
     Progress(const Model& model, const RunOptions& options)
         : show_(!options.quiet && model.config().progress_interval >= 0.0 && is_root(model)),
-          interval_(model.config().progress_interval), start_time_(model.flow().time()),
-          end_time_(model.config().end_time), start_(clock::now()), last_(start_) {}
+          interval_(model.config().progress_interval),
+          start_time_(model.flow().time()),
+          end_time_(model.config().end_time),
+          start_(clock::now()),
+          last_(start_) {}
     void report(const Model& model, const StepStats& step, const FlowHealth& health) {
         if (!show_ || since(last_) < interval_) return;
         last_ = clock::now();
         const double wall = since(start_), done = (model.flow().time() - start_time_) / (end_time_ - start_time_);
-        std::printf("step %8ld  t = %-11.5g dt = %-10.4g  |div| = %-9.2e  poisson it %3d  diffusion it %3d  wall %s  left %s\n",
-                    model.flow().step(), model.flow().time(), step.dt, health.max_divergence, step.poisson_iterations,
-                    step.diffusion_iterations, format_hms(wall).c_str(),
-                    format_hms(done > 0 ? wall * (1.0 - done) / done : NAN).c_str());
+        std::printf(
+            "step %8ld  t = %-11.5g dt = %-10.4g  |div| = %-9.2e  poisson it %3d  diffusion it %3d  wall %s  left %s\n",
+            model.flow().step(), model.flow().time(), step.dt, health.max_divergence, step.poisson_iterations,
+            step.diffusion_iterations, format_hms(wall).c_str(),
+            format_hms(done > 0 ? wall * (1.0 - done) / done : NAN).c_str());
         std::fflush(stdout);
     }
     static bool is_root(const Model& model) { return model.flow().grid().rank() == 0; }
@@ -184,7 +188,8 @@ std::string format_summary(const RunSummary& s, long long cells) {
         std::snprintf(buf, sizeof buf, " other %.1f %%\n", 100 * (s.wall_seconds - timed) / s.wall_seconds);
         o << buf;
         if (s.implicit_steps > 0) {
-            std::snprintf(buf, sizeof buf, "implicit diffusion in %ld of %ld steps, %.1f PCG iterations each (in the momentum share)\n",
+            std::snprintf(buf, sizeof buf,
+                          "implicit diffusion in %ld of %ld steps, %.1f PCG iterations each (in the momentum share)\n",
                           s.implicit_steps, s.steps, s.mean_diffusion_iterations);
             o << buf;
         }

@@ -27,9 +27,9 @@ public:
 struct RunOptions {
     std::filesystem::path out_dir = "results";
     std::optional<std::filesystem::path> restart;  // checkpoint to continue from
-    std::string case_yaml;                          // the case as run, saved as out_dir/case.yaml
-    bool quiet = false;                             // no progress lines (tests)
-    std::string carrier = "immersed";               // how bodies are carried: a name registered in carriers.hpp
+    std::string case_yaml;                         // the case as run, saved as out_dir/case.yaml
+    bool quiet = false;                            // no progress lines (tests)
+    std::string carrier = "immersed";              // how bodies are carried: a name registered in carriers.hpp
 };
 
 struct RunSummary {
@@ -43,7 +43,7 @@ struct RunSummary {
     std::vector<std::pair<std::string, double>> stage_seconds;
     double mean_poisson_iterations = 0.0;
     double mean_diffusion_iterations = 0.0;  // per implicit step: PCG iterations of the larger component
-    long implicit_steps = 0;                  // steps whose diffusion was implicit
+    long implicit_steps = 0;                 // steps whose diffusion was implicit
     double cell_steps_per_second = 0.0;
     double kinetic_energy = 0.0, max_divergence = 0.0;
     std::filesystem::path last_checkpoint;

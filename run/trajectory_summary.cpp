@@ -51,8 +51,9 @@ std::string TrajectorySummary::text() const {
                 vmax = std::max(vmax, v);
                 if (t >= t_last - 0.1) sum += v, ++n;
             }
-            std::snprintf(buf, sizeof buf, "  speed before the first impact: max %.4g m/s, mean over its last 0.1 s %.4g m/s\n",
-                          vmax, n ? sum / n : 0.0);
+            std::snprintf(buf, sizeof buf,
+                          "  speed before the first impact: max %.4g m/s, mean over its last 0.1 s %.4g m/s\n", vmax,
+                          n ? sum / n : 0.0);
             out += buf;
         }
         if (k.events.empty()) {
@@ -60,9 +61,9 @@ std::string TrajectorySummary::text() const {
         } else {
             const ContactEvent& e = k.events.front();
             std::snprintf(buf, sizeof buf,
-                          "  first impact at t = %.4g s on %s: velocity (%.4g, %.4g) m/s -> (%.4g, %.4g) m/s\n",
-                          e.time, e.obstacle.c_str(), e.velocity_before.x(), e.velocity_before.y(),
-                          e.velocity_after.x(), e.velocity_after.y());
+                          "  first impact at t = %.4g s on %s: velocity (%.4g, %.4g) m/s -> (%.4g, %.4g) m/s\n", e.time,
+                          e.obstacle.c_str(), e.velocity_before.x(), e.velocity_before.y(), e.velocity_after.x(),
+                          e.velocity_after.y());
             out += buf;
             std::snprintf(buf, sizeof buf, "  rebound height (centre, against gravity) %.4g m\n", k.rebound_height);
             out += buf;

@@ -130,7 +130,8 @@ void KEpsilon::production(Field2D& P) const {
             const double dudx = (vel.u(i + 1, j) - vel.u(i, j)) / X.w(i);
             const double dvdy = (vel.v(i, j + 1) - vel.v(i, j)) / Y.w(j);
             const double s00 = shear(i, j), s10 = shear(i + 1, j), s01 = shear(i, j + 1), s11 = shear(i + 1, j + 1);
-            const double S2 = 2.0 * (dudx * dudx + dvdy * dvdy) + 0.25 * (s00 * s00 + s10 * s10 + s01 * s01 + s11 * s11);
+            const double S2 =
+                2.0 * (dudx * dudx + dvdy * dvdy) + 0.25 * (s00 * s00 + s10 * s10 + s01 * s01 + s11 * s11);
             double p = model_nu_t_(i, j) * S2;
             if (kato_launder) {
                 const double w00 = vorticity(i, j), w10 = vorticity(i + 1, j), w01 = vorticity(i, j + 1),
@@ -209,10 +210,12 @@ void KEpsilon::update(double dt) {
                 if (fluid(i, j) == 0.0) continue;
                 const double k = k_(i, j), e = eps_(i, j), rate = e / k;
                 k_(i, j) = std::max(k_floor_, (k + h * (tk_(i, j) + P_(i, j))) / (1.0 + h * rate));
-                eps_(i, j) = std::max(eps_floor_, (e + h * (te_(i, j) + C::c1 * rate * P_(i, j))) / (1.0 + h * C::c2 * rate));
+                eps_(i, j) =
+                    std::max(eps_floor_, (e + h * (te_(i, j) + C::c1 * rate * P_(i, j))) / (1.0 + h * C::c2 * rate));
             }
         for (const WallCell& w : walls)
-            eps_(w.i, w.j) = std::max(eps_floor_, WallFunction(k_(w.i, w.j), w.y, nu).dissipation(k_(w.i, w.j), w.y, nu));
+            eps_(w.i, w.j) =
+                std::max(eps_floor_, WallFunction(k_(w.i, w.j), w.y, nu).dissipation(k_(w.i, w.j), w.y, nu));
     }
     last_substeps_ = substeps;
 
@@ -275,12 +278,14 @@ void KEpsilon::refresh_eddy_viscosity() {
             const int j = s == Side::bottom ? 0 : ny - 1, jc = s == Side::bottom ? 0 : ny;
             const double y = 0.5 * Y.w(j);
             for (int i = 0; i <= nx; ++i)
-                e.corner(i, jc) = 0.5 * (WallFunction(k_(i - 1, j), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
+                e.corner(i, jc) =
+                    0.5 * (WallFunction(k_(i - 1, j), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
         } else {
             const int i = s == Side::left ? 0 : nx - 1, ic = s == Side::left ? 0 : nx;
             const double y = 0.5 * X.w(i);
             for (int j = 0; j <= ny; ++j)
-                e.corner(ic, j) = 0.5 * (WallFunction(k_(i, j - 1), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
+                e.corner(ic, j) =
+                    0.5 * (WallFunction(k_(i, j - 1), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
         }
     }
     double mx = 0.0;

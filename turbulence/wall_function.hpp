@@ -19,7 +19,7 @@ struct KEpsilonConstants {
 };
 
 struct WallFunction {
-    double u_tau = 0.0;      // from k
+    double u_tau = 0.0;  // from k
     double y_plus = 0.0;
     double nu_wall = 0.0;    // eddy viscosity at the wall (m^2/s)
     bool log_layer = false;  // y+ above the switch

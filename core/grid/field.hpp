@@ -13,7 +13,10 @@ class Field2D {
 public:
     Field2D() = default;
     Field2D(int nx, int ny, double value = 0.0)
-        : nx_(nx), ny_(ny), stride_(nx + 2 * kGhost), data_(static_cast<std::size_t>(stride_) * (ny + 2 * kGhost), value) {}
+        : nx_(nx),
+          ny_(ny),
+          stride_(nx + 2 * kGhost),
+          data_(static_cast<std::size_t>(stride_) * (ny + 2 * kGhost), value) {}
     explicit Field2D(const Grid& g, double value = 0.0) : Field2D(g.nx(), g.ny(), value) {}
 
     double& operator()(int i, int j) { return data_[index(i, j)]; }

@@ -36,9 +36,8 @@ Grid::Grid(Axis x, Axis y, MPI_Comm comm, int ranks_x, int ranks_y) : x_(std::mo
     dims_[0] = ranks_x > 0 ? ranks_x : 0;
     dims_[1] = ranks_y > 0 ? ranks_y : 0;
     if (dims_[0] > 0 && dims_[1] > 0 && dims_[0] * dims_[1] != world)
-        throw std::invalid_argument("parallel.ranks: " + std::to_string(dims_[0]) + " x " +
-                                    std::to_string(dims_[1]) + " patches do not match " +
-                                    std::to_string(world) + " MPI ranks");
+        throw std::invalid_argument("parallel.ranks: " + std::to_string(dims_[0]) + " x " + std::to_string(dims_[1]) +
+                                    " patches do not match " + std::to_string(world) + " MPI ranks");
     // Prefer splitting the longer direction first (MPI_Dims_create returns dims in decreasing order).
     if (dims_[0] == 0 && dims_[1] == 0 && x_.cells() < y_.cells()) {
         int d[2] = {0, 0};

@@ -27,8 +27,8 @@ class LocalAxis {
 public:
     void build(const Axis& axis, int first_cell, int cells);
 
-    int n = 0;            // owned cells
-    int offset = 0;       // global index of local cell 0
+    int n = 0;       // owned cells
+    int offset = 0;  // global index of local cell 0
     // f: line at the low face of cell k; c: centre of cell k; w: width of cell k;
     // dc: distance between centres k-1 and k (across face k).
     double f(int k) const { return f_[k + kGhost]; }

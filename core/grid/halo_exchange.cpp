@@ -12,7 +12,10 @@ void HaloExchange::exchange(Field2D& f) {
 
     // x direction: kGhost columns of the owned rows.
     const int nxmsg = kGhost * ny;
-    send_lo_.resize(nxmsg); send_hi_.resize(nxmsg); recv_lo_.resize(nxmsg); recv_hi_.resize(nxmsg);
+    send_lo_.resize(nxmsg);
+    send_hi_.resize(nxmsg);
+    recv_lo_.resize(nxmsg);
+    recv_hi_.resize(nxmsg);
     for (int j = 0; j < ny; ++j)
         for (int g = 0; g < kGhost; ++g) {
             send_lo_[j * kGhost + g] = f(g, j);
@@ -32,7 +35,10 @@ void HaloExchange::exchange(Field2D& f) {
     // y direction: kGhost rows, all columns including the x ghosts just filled.
     const int width = nx + 2 * kGhost;
     const int nymsg = kGhost * width;
-    send_lo_.resize(nymsg); send_hi_.resize(nymsg); recv_lo_.resize(nymsg); recv_hi_.resize(nymsg);
+    send_lo_.resize(nymsg);
+    send_hi_.resize(nymsg);
+    recv_lo_.resize(nymsg);
+    recv_hi_.resize(nymsg);
     for (int g = 0; g < kGhost; ++g)
         for (int i = -kGhost; i < nx + kGhost; ++i) {
             send_lo_[g * width + i + kGhost] = f(i, g);

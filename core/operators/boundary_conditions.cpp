@@ -23,8 +23,7 @@ BoundaryConditions::BoundaryConditions(const Grid& grid, const std::array<Bounda
     : grid_(grid), config_(config) {
     for (Side s : kSides) {
         const auto& c = config_[static_cast<int>(s)];
-        dirichlet_[static_cast<int>(s)] =
-            c.type == BoundaryType::outflow && c.outflow == OutflowKind::zero_stress;
+        dirichlet_[static_cast<int>(s)] = c.type == BoundaryType::outflow && c.outflow == OutflowKind::zero_stress;
     }
     u_first_ = (grid_.touches(Side::left) && !grid_.x_axis().periodic()) ? 1 : 0;
     v_first_ = (grid_.touches(Side::bottom) && !grid_.y_axis().periodic()) ? 1 : 0;
@@ -156,23 +155,25 @@ void BoundaryConditions::set_outflow(const Velocity& old, Velocity& next, double
         switch (s) {
             case Side::right:
                 for (int j = -kGhost; j < ny + kGhost; ++j)
-                    next.u(nx, j) = convective ? old.u(nx, j) - dt * Uc * (old.u(nx, j) - old.u(nx - 1, j)) / lx.w(nx - 1)
-                                               : next.u(nx - 1, j);
+                    next.u(nx, j) = convective
+                                        ? old.u(nx, j) - dt * Uc * (old.u(nx, j) - old.u(nx - 1, j)) / lx.w(nx - 1)
+                                        : next.u(nx - 1, j);
                 break;
             case Side::left:
                 for (int j = -kGhost; j < ny + kGhost; ++j)
-                    next.u(0, j) = convective ? old.u(0, j) + dt * Uc * (old.u(1, j) - old.u(0, j)) / lx.w(0)
-                                              : next.u(1, j);
+                    next.u(0, j) =
+                        convective ? old.u(0, j) + dt * Uc * (old.u(1, j) - old.u(0, j)) / lx.w(0) : next.u(1, j);
                 break;
             case Side::top:
                 for (int i = -kGhost; i < nx + kGhost; ++i)
-                    next.v(i, ny) = convective ? old.v(i, ny) - dt * Uc * (old.v(i, ny) - old.v(i, ny - 1)) / ly.w(ny - 1)
-                                               : next.v(i, ny - 1);
+                    next.v(i, ny) = convective
+                                        ? old.v(i, ny) - dt * Uc * (old.v(i, ny) - old.v(i, ny - 1)) / ly.w(ny - 1)
+                                        : next.v(i, ny - 1);
                 break;
             case Side::bottom:
                 for (int i = -kGhost; i < nx + kGhost; ++i)
-                    next.v(i, 0) = convective ? old.v(i, 0) + dt * Uc * (old.v(i, 1) - old.v(i, 0)) / ly.w(0)
-                                              : next.v(i, 1);
+                    next.v(i, 0) =
+                        convective ? old.v(i, 0) + dt * Uc * (old.v(i, 1) - old.v(i, 0)) / ly.w(0) : next.v(i, 1);
                 break;
         }
     }

@@ -62,9 +62,12 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first,
                 Velocity& out) {
     switch (scheme) {
-        case ConvectionScheme::central: return convection_impl<ConvectionScheme::central>(grid, vel, u_first, v_first, out);
-        case ConvectionScheme::van_leer: return convection_impl<ConvectionScheme::van_leer>(grid, vel, u_first, v_first, out);
-        case ConvectionScheme::koren: return convection_impl<ConvectionScheme::koren>(grid, vel, u_first, v_first, out);
+        case ConvectionScheme::central:
+            return convection_impl<ConvectionScheme::central>(grid, vel, u_first, v_first, out);
+        case ConvectionScheme::van_leer:
+            return convection_impl<ConvectionScheme::van_leer>(grid, vel, u_first, v_first, out);
+        case ConvectionScheme::koren:
+            return convection_impl<ConvectionScheme::koren>(grid, vel, u_first, v_first, out);
     }
 }
 

@@ -51,8 +51,7 @@ void vorticity(const Grid& grid, const Velocity& vel, Field2D& omega) {
             omega(i, j) = 0.25 * (corner(i, j) + corner(i + 1, j) + corner(i, j + 1) + corner(i + 1, j + 1));
 }
 
-Probes::Probes(const Grid& grid, std::vector<std::array<double, 2>> points)
-    : grid_(grid), points_(std::move(points)) {
+Probes::Probes(const Grid& grid, std::vector<std::array<double, 2>> points) : grid_(grid), points_(std::move(points)) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     for (const auto& pt : points_) {

@@ -28,7 +28,7 @@ public:
 private:
     struct Stencil {
         bool local = false;
-        int i = 0, j = 0;     // lower-left cell centre
+        int i = 0, j = 0;  // lower-left cell centre
         double fx = 0, fy = 0;
     };
     const Grid& grid_;

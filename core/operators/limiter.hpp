@@ -14,7 +14,9 @@ namespace chute {
 template <ConvectionScheme S>
 inline double face_value(double uu, double u, double d, double central) {
     if constexpr (S == ConvectionScheme::central) {
-        (void)uu; (void)u; (void)d;
+        (void)uu;
+        (void)u;
+        (void)d;
         return central;
     } else {
         const double a = u - uu, b = d - u;

@@ -13,8 +13,8 @@
 namespace chute {
 
 struct EddyViscosity {
-    Field2D cell;    // nu_t at cell centres, ghosts filled
-    Field2D corner;  // nu_t at corner (i, j) = (xf(i), yf(j)), i in [0, nx], j in [0, ny]
+    Field2D cell;      // nu_t at cell centres, ghosts filled
+    Field2D corner;    // nu_t at corner (i, j) = (xf(i), yf(j)), i in [0, nx], j in [0, ny]
     double max = 0.0;  // largest nu_t on any rank (time-step limit)
     explicit EddyViscosity(const Grid& g) : cell(g), corner(g) {}
     EddyViscosity() = default;

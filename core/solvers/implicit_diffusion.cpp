@@ -87,8 +87,10 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
     Field2D& f = is_u ? vel.u : vel.v;
     // (a, b): index along and across the component; field, cell and corner arrays are (i, j).
     auto at = [&](Field2D& g, int a, int b) -> double& {
-        if constexpr (is_u) return g(a, b);
-        else return g(b, a);
+        if constexpr (is_u)
+            return g(a, b);
+        else
+            return g(b, a);
     };
     auto cell = [&](int a, int b) { return nu + (is_u ? eddy.cell(a, b) : eddy.cell(b, a)); };
     auto corner = [&](int a, int b) { return nu + (is_u ? eddy.corner(a, b) : eddy.corner(b, a)); };
@@ -137,7 +139,7 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
             v[0] = diag;
             if constexpr (is_u) {  // stencil order: west, east, south, north in (x, y)
                 v[1] = w, v[2] = e, v[3] = s, v[4] = n;
-            } else {     // for v, "along" is y: south/north are a-1/a+1, west/east are b-1/b+1
+            } else {  // for v, "along" is y: south/north are a-1/a+1, west/east are b-1/b+1
                 v[1] = s, v[2] = n, v[3] = w, v[4] = e;
             }
             c.solution[k] = 0.0;

@@ -22,8 +22,7 @@ std::map<HYPRE_StructSolver, NullSpace>& null_spaces() {
 }
 
 // One PFMG V-cycle, then x -= mean(x): the preconditioner of PCG restricted to zero-mean vectors.
-HYPRE_Int pfmg_zero_mean(HYPRE_StructSolver pfmg, HYPRE_StructMatrix A, HYPRE_StructVector b,
-                         HYPRE_StructVector x) {
+HYPRE_Int pfmg_zero_mean(HYPRE_StructSolver pfmg, HYPRE_StructMatrix A, HYPRE_StructVector b, HYPRE_StructVector x) {
     HYPRE_StructPFMGSolve(pfmg, A, b, x);
     const NullSpace& ns = null_spaces().at(pfmg);
     auto* xv = reinterpret_cast<hypre_StructVector*>(x);

@@ -27,13 +27,17 @@ namespace {
 class StaircaseCarrier final : public Carrier {
 public:
     StaircaseCarrier(const Grid& grid, const CaseConfig& c, std::vector<Body>& bodies)
-        : grid_(grid), rho_(c.density), depth_(c.depth), bodies_(bodies), fluid_(grid, 1.0),
-          rate_(bodies.size(), Vec2::Zero()), start_(bodies.size(), Vec2::Zero()), wrench_(bodies.size()) {}
+        : grid_(grid),
+          rho_(c.density),
+          depth_(c.depth),
+          bodies_(bodies),
+          fluid_(grid, 1.0),
+          rate_(bodies.size(), Vec2::Zero()),
+          start_(bodies.size(), Vec2::Zero()),
+          wrench_(bodies.size()) {}
 
     const std::vector<Body>& bodies() const override { return bodies_; }
-    double cell_size(std::size_t) const override {
-        return std::min(grid_.x_axis().width(0), grid_.y_axis().width(0));
-    }
+    double cell_size(std::size_t) const override { return std::min(grid_.x_axis().width(0), grid_.y_axis().width(0)); }
     void begin_step(const Velocity& start) override {
         for (std::size_t b = 0; b < bodies_.size(); ++b) start_[b] = momentum_inside(start, b);
     }
@@ -70,7 +74,8 @@ public:
         for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
             for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
                 const Vec2 x(X.c(i), Y.c(j));
-                fluid_(i, j) = std::none_of(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.contains(x); });
+                fluid_(i, j) =
+                    std::none_of(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.contains(x); });
             }
     }
     const Field2D& fluid_cells() const override { return fluid_; }
@@ -183,8 +188,10 @@ TEST(CarrierSeam, ATestCarrierRunsTheWholeLoop) {
     const double t = falling[0], x = falling[1], y = falling[2], u = falling[4], v = falling[5];
     const double a = -v / t, buoyancy_only = 0.5 * 9.81;
     if (rank == 0)
-        std::printf("staircase carrier: %ld steps, falling disc at t = %.3f s: y = %.4f m, v = %.4f m/s, mean "
-                    "acceleration %.3f m/s^2 (buoyancy alone %.3f)\n", s.steps, t, y, v, a, buoyancy_only);
+        std::printf(
+            "staircase carrier: %ld steps, falling disc at t = %.3f s: y = %.4f m, v = %.4f m/s, mean "
+            "acceleration %.3f m/s^2 (buoyancy alone %.3f)\n",
+            s.steps, t, y, v, a, buoyancy_only);
     EXPECT_GT(a, 0.0);
     EXPECT_LT(a, 0.8 * buoyancy_only);
     EXPECT_LT(y, 0.6);

@@ -230,8 +230,8 @@ TEST(CaseFile, SetOverridesKeyInFile) {
 }
 
 TEST(CaseFile, SetAddsKeyAbsentFromFile) {
-    const CaseConfig c = parse_case_text(kMinimal, {"numerics.poisson.tolerance=1e-6", "numerics.dt=0.01",
-                                                    "output.probes=[[0.5, 0.5]]", "name=run2"});
+    const CaseConfig c = parse_case_text(
+        kMinimal, {"numerics.poisson.tolerance=1e-6", "numerics.dt=0.01", "output.probes=[[0.5, 0.5]]", "name=run2"});
     EXPECT_EQ(c.poisson_tolerance, 1e-6);
     ASSERT_TRUE(c.fixed_dt.has_value());
     EXPECT_EQ(*c.fixed_dt, 0.01);
@@ -276,8 +276,7 @@ TEST(CaseFile, WrongType) {
                    {"boundaries.top.velocity[1]", "expected a number, got 'up'"});
     expect_message(error_of(minimal_with("fluid:\n", "fluid:\n  density: [1, 2]\n")),
                    {"fluid.density", "expected a number, got a list"});
-    expect_message(error_of(minimal_with("fluid:\n  viscosity: 0.01", "fluid: 3")),
-                   {"fluid", "expected a mapping"});
+    expect_message(error_of(minimal_with("fluid:\n  viscosity: 0.01", "fluid: 3")), {"fluid", "expected a mapping"});
 }
 
 TEST(CaseFile, NegativeDensity) {
@@ -303,8 +302,8 @@ TEST(CaseFile, WrongListLength) {
 
 TEST(CaseFile, InvalidChoice) {
     expect_message(error_of(minimal_with("top: {type: wall", "top: {type: wal")),
-                   {"line 10", "boundaries.top.type", "invalid choice 'wal'",
-                    "wall, slip, inflow, outflow, periodic", "did you mean 'wall'"});
+                   {"line 10", "boundaries.top.type", "invalid choice 'wal'", "wall, slip, inflow, outflow, periodic",
+                    "did you mean 'wall'"});
 }
 
 TEST(CaseFile, MissingRequiredKey) {
@@ -322,26 +321,23 @@ TEST(CaseFile, MissingRequiredKey) {
 TEST(CaseFile, KeyOnlyForAnotherChoice) {
     expect_message(error_of(kMinimal, {"initial.amplitude=2"}),
                    {"initial.amplitude", "not used when type is 'uniform'", "only with type: taylor_green"});
-    expect_message(
-        error_of(minimal_with("top: {type: wall, velocity: [1, 0]}", "top: {type: slip, velocity: [1, 0]}")),
-        {"line 10", "boundaries.top.velocity", "not used when type is 'slip'"});
+    expect_message(error_of(minimal_with("top: {type: wall, velocity: [1, 0]}", "top: {type: slip, velocity: [1, 0]}")),
+                   {"line 10", "boundaries.top.velocity", "not used when type is 'slip'"});
     expect_message(error_of(minimal_with("right: {type: wall}", "right: {type: wall, kind: convective}")),
                    {"boundaries.right.kind", "only with type: outflow"});
 }
 
 TEST(CaseFile, UnpairedPeriodic) {
-    expect_message(error_of(minimal_with("left: {type: wall}", "left: {type: periodic}")),
-                   {"line 7", "boundaries.left.type", "pairs",
-                    "boundaries.right.type must be periodic too, got 'wall'"});
-    const CaseConfig c =
-        parse_case_text(kMinimal, {"boundaries.left.type=periodic", "boundaries.right.type=periodic"});
+    expect_message(
+        error_of(minimal_with("left: {type: wall}", "left: {type: periodic}")),
+        {"line 7", "boundaries.left.type", "pairs", "boundaries.right.type must be periodic too, got 'wall'"});
+    const CaseConfig c = parse_case_text(kMinimal, {"boundaries.left.type=periodic", "boundaries.right.type=periodic"});
     EXPECT_EQ(c.boundary[0].type, BoundaryType::periodic);
 }
 
 TEST(CaseFile, WallNormalVelocity) {
-    expect_message(
-        error_of(minimal_with("velocity: [1, 0]", "velocity: [1, 0.5]")),
-        {"line 10", "boundaries.top.velocity", "normal component velocity[1] must be 0", "got 0.5"});
+    expect_message(error_of(minimal_with("velocity: [1, 0]", "velocity: [1, 0.5]")),
+                   {"line 10", "boundaries.top.velocity", "normal component velocity[1] must be 0", "got 0.5"});
     expect_message(error_of(minimal_with("left: {type: wall}", "left: {type: wall, velocity: [1, 0]}")),
                    {"boundaries.left.velocity", "normal component velocity[0] must be 0"});
 }
@@ -352,9 +348,8 @@ TEST(CaseFile, InflowChecks) {
     EXPECT_NO_THROW(parse_case_text(inflow, {"boundaries.right={type: outflow}"}));
     expect_message(error_of(inflow, {"boundaries.right={type: outflow}", "boundaries.left.velocity=[-1, 0]"}),
                    {"boundaries.left.velocity", "must enter the domain", "velocity[0] must be > 0"});
-    expect_message(
-        error_of(inflow, {"boundaries.right={type: outflow}", "boundaries.left.profile=parabolic"}),
-        {"boundaries.left.peak", "missing required key"});
+    expect_message(error_of(inflow, {"boundaries.right={type: outflow}", "boundaries.left.profile=parabolic"}),
+                   {"boundaries.left.peak", "missing required key"});
 }
 
 TEST(CaseFile, ProbeOutsideDomain) {
@@ -365,12 +360,11 @@ TEST(CaseFile, ProbeOutsideDomain) {
 TEST(CaseFile, AxisChecks) {
     expect_message(error_of(minimal_with("x: {start: 0, end: 1", "x: {start: 2, end: 1")),
                    {"line 2", "domain.x.end", "must be greater than domain.x.start (2), got 1"});
-    expect_message(error_of(minimal_with("x: {start: 0, end: 1, cells: 8}",
-                                         "x: {spacing: lines, lines: [0, 0.5, 0.4, 1]}")),
-                   {"domain.x.lines[2]", "strictly increasing, got 0.4 after 0.5"});
     expect_message(
-        error_of(minimal_with("x: {start: 0, end: 1, cells: 8}", "x: {spacing: lines, lines: [0, 1]}")),
-        {"domain.x.lines", "at least 3 lines"});
+        error_of(minimal_with("x: {start: 0, end: 1, cells: 8}", "x: {spacing: lines, lines: [0, 0.5, 0.4, 1]}")),
+        {"domain.x.lines[2]", "strictly increasing, got 0.4 after 0.5"});
+    expect_message(error_of(minimal_with("x: {start: 0, end: 1, cells: 8}", "x: {spacing: lines, lines: [0, 1]}")),
+                   {"domain.x.lines", "at least 3 lines"});
 }
 
 TEST(CaseFile, DuplicateKey) {
@@ -379,10 +373,8 @@ TEST(CaseFile, DuplicateKey) {
 }
 
 TEST(CaseFile, YamlSyntaxError) {
-    expect_message(error_of(minimal_with("velocity: [1, 0]}", "velocity: [1, 0}")),
-                   {"line 10", "YAML syntax error"});
-    const auto path =
-        temp_case("broken", minimal_with("  viscosity: 0.01\n", "  viscosity: 0.01\n   density: 3\n"));
+    expect_message(error_of(minimal_with("velocity: [1, 0]}", "velocity: [1, 0}")), {"line 10", "YAML syntax error"});
+    const auto path = temp_case("broken", minimal_with("  viscosity: 0.01\n", "  viscosity: 0.01\n   density: 3\n"));
     try {
         load_case(path);
         ADD_FAILURE() << "no CaseError";
@@ -423,8 +415,7 @@ TEST(CaseFile, DocListsEveryKey) {
 // The key table in the documentation is exactly the one the schema generates.
 TEST(CaseFile, DocTableIsCurrent) {
     const std::string doc = read_text(kDoc);
-    const std::string begin = "<!-- BEGIN GENERATED KEY TABLE -->\n",
-                      end = "<!-- END GENERATED KEY TABLE -->";
+    const std::string begin = "<!-- BEGIN GENERATED KEY TABLE -->\n", end = "<!-- END GENERATED KEY TABLE -->";
     const std::size_t b = doc.find(begin), e = doc.find(end);
     ASSERT_NE(b, std::string::npos) << kDoc << " lacks " << begin;
     ASSERT_NE(e, std::string::npos) << kDoc << " lacks " << end;
@@ -432,9 +423,8 @@ TEST(CaseFile, DocTableIsCurrent) {
     if (table != schema_markdown()) {
         const auto updated = std::filesystem::current_path() / "case-file.md";
         std::ofstream(updated) << doc.substr(0, b + begin.size()) << schema_markdown() << doc.substr(e);
-        ADD_FAILURE() << "the key table in " << kDoc
-                      << " differs from schema_markdown(); updated doc written to " << updated << ": cp "
-                      << updated << " " << kDoc;
+        ADD_FAILURE() << "the key table in " << kDoc << " differs from schema_markdown(); updated doc written to "
+                      << updated << ": cp " << updated << " " << kDoc;
     }
 }
 
@@ -509,7 +499,8 @@ TEST(CaseFile, BodyErrorsNameTheKey) {
 
 TEST(CaseFile, FreeBodyKeysAndErrors) {
     const std::string block = "bodies:\n  block:\n    shape: rectangle\n    centre: [0.5, 0.5]\n    size: [0.2, 0.2]\n";
-    const CaseConfig c = parse_case_text(kMinimal + block + "    density: 2500\n    motion: {type: free, lock_rotation: "
+    const CaseConfig c = parse_case_text(kMinimal + block +
+                                         "    density: 2500\n    motion: {type: free, lock_rotation: "
                                          "true, velocity: [0, -1]}\ncontact: {law: impulse, distance: 0.01}\n");
     EXPECT_EQ(c.bodies[0].motion.type, MotionType::free);
     EXPECT_EQ(c.bodies[0].density, 2500.0);
@@ -521,13 +512,13 @@ TEST(CaseFile, FreeBodyKeysAndErrors) {
     EXPECT_EQ(c.gravity[1], -9.81);
     expect_message(error_of(kMinimal + block + "    motion: {type: free}\n"),
                    {"bodies.block.density", "a free body needs its density"});
-    expect_message(error_of(kMinimal + block + "    density: 2500\n"),
-                   {"bodies.block.density", "only free bodies"});
-    expect_message(error_of(kMinimal + block + "    density: -1\n    motion: {type: free}\n"), {"bodies.block.density"});
-    expect_message(error_of(kMinimal + block + "    motion: {type: fixed, lock_x: true}\n"), {"bodies.block.motion.lock_x"});
+    expect_message(error_of(kMinimal + block + "    density: 2500\n"), {"bodies.block.density", "only free bodies"});
+    expect_message(error_of(kMinimal + block + "    density: -1\n    motion: {type: free}\n"),
+                   {"bodies.block.density"});
+    expect_message(error_of(kMinimal + block + "    motion: {type: fixed, lock_x: true}\n"),
+                   {"bodies.block.motion.lock_x"});
     expect_message(error_of(kMinimal + block, {"contact.normal_restitution=1.5"}), {"contact.normal_restitution"});
 }
 
 }  // namespace
 }  // namespace chute
-

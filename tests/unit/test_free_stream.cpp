@@ -20,10 +20,12 @@ double departure(Side inflow_side, OutflowKind outflow, ConvectionScheme scheme)
     c.y = AxisConfig{0.0, 1.0, 16, "geometric", 2.0, 1.08, {}};
     const bool along_x = inflow_side == Side::left || inflow_side == Side::right;
     const double sign = (inflow_side == Side::left || inflow_side == Side::bottom) ? 1.0 : -1.0;
-    const std::array<double, 2> velocity = along_x ? std::array<double, 2>{sign * U, 0.0} : std::array<double, 2>{0.0, sign * U};
-    const Side outflow_side = inflow_side == Side::left ? Side::right
-                              : inflow_side == Side::right ? Side::left
-                              : inflow_side == Side::bottom ? Side::top : Side::bottom;
+    const std::array<double, 2> velocity =
+        along_x ? std::array<double, 2>{sign * U, 0.0} : std::array<double, 2>{0.0, sign * U};
+    const Side outflow_side = inflow_side == Side::left     ? Side::right
+                              : inflow_side == Side::right  ? Side::left
+                              : inflow_side == Side::bottom ? Side::top
+                                                            : Side::bottom;
     for (auto& b : c.boundary) b.type = BoundaryType::slip;
     auto& in = c.boundary[static_cast<int>(inflow_side)];
     in.type = BoundaryType::inflow;
@@ -53,9 +55,11 @@ double departure(Side inflow_side, OutflowKind outflow, ConvectionScheme scheme)
 TEST(FreeStream, UniformCurrentBetweenSlipWallsIsPreserved) {
     for (Side side : kSides)
         for (OutflowKind outflow : {OutflowKind::convective, OutflowKind::zero_stress})
-            for (ConvectionScheme scheme : {ConvectionScheme::central, ConvectionScheme::van_leer, ConvectionScheme::koren}) {
+            for (ConvectionScheme scheme :
+                 {ConvectionScheme::central, ConvectionScheme::van_leer, ConvectionScheme::koren}) {
                 SCOPED_TRACE("inflow side " + std::to_string(static_cast<int>(side)) + ", outflow kind " +
-                             std::to_string(static_cast<int>(outflow)) + ", scheme " + std::to_string(static_cast<int>(scheme)));
+                             std::to_string(static_cast<int>(outflow)) + ", scheme " +
+                             std::to_string(static_cast<int>(scheme)));
                 EXPECT_LT(departure(side, outflow, scheme), 1e-12);
             }
 }

@@ -54,7 +54,7 @@ TEST(Grid, MovingLinesKeepTheProjectionExact) {
     FlowSolver s(c, MPI_COMM_WORLD);
     for (int k = 0; k < 20; ++k) s.advance();
     s.set_grid_lines(tanh_lines(0.0, 1.0, 32, 1.0), geometric_lines(0.0, 1.0, 32, 1.03));
-    EXPECT_LT(s.grid().x_axis().width(0), 1.0 / 32);  // the lines moved
+    EXPECT_LT(s.grid().x_axis().width(0), 1.0 / 32);                                      // the lines moved
     EXPECT_DOUBLE_EQ(s.grid().lx().w(0), s.grid().x_axis().width(s.grid().lx().offset));  // geometry rebuilt
     for (int k = 0; k < 5; ++k) s.advance();
     // max |div u| against the velocity-gradient scale U / h_min ~ 1 / 0.02.

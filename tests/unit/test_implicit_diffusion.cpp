@@ -76,9 +76,10 @@ double decay_error(BoundaryType sides, bool along_y) {
             err = std::max(err, std::abs(b - factor * a));
         }
     err = global_max(g, err);
-    print_on_rank0("shear mode (%s sides, %s): step %.0fx the explicit limit, factor %.6f, max |u - factor u0| = %.2e\n",
-                   sides == BoundaryType::wall ? "wall" : "slip", along_y ? "v(x)" : "u(y)", m.dt / (0.25 * m.h * m.h / m.c.viscosity),
-                   factor, err);
+    print_on_rank0(
+        "shear mode (%s sides, %s): step %.0fx the explicit limit, factor %.6f, max |u - factor u0| = %.2e\n",
+        sides == BoundaryType::wall ? "wall" : "slip", along_y ? "v(x)" : "u(y)",
+        m.dt / (0.25 * m.h * m.h / m.c.viscosity), factor, err);
     return err;
 }
 
@@ -99,7 +100,8 @@ TEST(ImplicitDiffusion, PartsSumToTheFullStress) {
     CaseConfig c;
     c.x = AxisConfig{0.0, 2.0, 40, "tanh", 1.5, 1.05, {}};
     c.y = AxisConfig{0.0, 1.0, 24, "geometric", 2.0, 1.04, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {1.0, 0.2}, InflowProfile::uniform, 1.0, OutflowKind::convective};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {1.0, 0.2}, InflowProfile::uniform, 1.0, OutflowKind::convective};
     c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
     c.boundary[2].type = BoundaryType::wall;
     c.boundary[3].type = BoundaryType::slip;

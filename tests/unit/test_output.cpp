@@ -34,7 +34,7 @@ int world_rank() {
 
 // A fresh directory shared by all ranks (rank 0 names, creates and finally removes it).
 class TempDir {
-  public:
+public:
     TempDir() {
         static int counter = 0;
         std::string name;
@@ -61,7 +61,7 @@ class TempDir {
     }
     const fs::path& path() const { return path_; }
 
-  private:
+private:
     fs::path path_;
 };
 
@@ -100,8 +100,8 @@ void fill_local(const Grid& g, Field2D& f, int ex, int ey, int which) {
 }
 
 Grid make_grid(int ranks_x = 0, int ranks_y = 0, bool periodic_x = false) {
-    return Grid(Axis(uniform_lines(0, 1, 12), periodic_x), Axis(uniform_lines(0, 2, 10), false),
-                MPI_COMM_WORLD, ranks_x, ranks_y);
+    return Grid(Axis(uniform_lines(0, 1, 12), periodic_x), Axis(uniform_lines(0, 2, 10), false), MPI_COMM_WORLD,
+                ranks_x, ranks_y);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -118,8 +118,8 @@ TEST(Gather, ScatterThenGatherRoundTrip) {
         const Grid g = make_grid(layout[0], layout[1]);
         for (int ex = 0; ex <= 1; ++ex)
             for (int ey = 0; ey <= 1; ++ey) {
-                SCOPED_TRACE("ranks " + std::to_string(layout[0]) + "x" + std::to_string(layout[1]) +
-                             " extra_x " + std::to_string(ex) + " extra_y " + std::to_string(ey));
+                SCOPED_TRACE("ranks " + std::to_string(layout[0]) + "x" + std::to_string(layout[1]) + " extra_x " +
+                             std::to_string(ex) + " extra_y " + std::to_string(ey));
                 const std::vector<double> global = make_global(g, ex, ey, 0);
                 Field2D f(g, -99.0);
                 scatter_global(g, global, f, ex, ey);
@@ -162,8 +162,7 @@ struct CheckpointFixtureFields {
 };
 
 Grid make_stretched_grid(int nx, int ny) {
-    return Grid(Axis(tanh_lines(0, 1, nx, 1.3), false), Axis(geometric_lines(-1, 2, ny, 1.05), false),
-                MPI_COMM_WORLD);
+    return Grid(Axis(tanh_lines(0, 1, nx, 1.3), false), Axis(geometric_lines(-1, 2, ny, 1.05), false), MPI_COMM_WORLD);
 }
 
 // Write then read: header, grid lines and every field (boundary face slots included) come back bit for bit.
@@ -217,8 +216,7 @@ TEST(Checkpoint, WrongGridSizeIsRejectedWithMessage) {
         FAIL() << "expected std::runtime_error";
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("checkpoint grid 12x10 does not match case grid 24x10"), std::string::npos)
-            << what;
+        EXPECT_NE(what.find("checkpoint grid 12x10 does not match case grid 24x10"), std::string::npos) << what;
         EXPECT_NE(what.find(path.string()), std::string::npos) << what;
     }
 }
@@ -263,8 +261,7 @@ TEST(Checkpoint, FailedWriteKeepsOlderFileAndLeavesNoTmp) {
     write_checkpoint(g, path, {5, 0.5, 0.1, 0.1}, f.list());
 
     Field2D other(g, 42.0);
-    EXPECT_THROW(write_checkpoint(g, path, {6, 0.6, 0.1, 0.1}, {{"p", &other}, {"p", &other}}),
-                 std::runtime_error);
+    EXPECT_THROW(write_checkpoint(g, path, {6, 0.6, 0.1, 0.1}, {{"p", &other}, {"p", &other}}), std::runtime_error);
     if (g.rank() == 0) {
         EXPECT_FALSE(has_tmp_file(dir.path()));
     }
@@ -393,9 +390,9 @@ TEST(Output, FieldOutputWritesSnapshotsAndXdmf) {
     const std::string xdmf = read_text(dir.path() / "fields.xdmf");
     for (const char* needle :
          {"fields_000000.h5:/p", "fields_000000.h5:/vorticity", "fields_000010.h5:/p", "fields_000010.h5:/x",
-          "fields_000010.h5:/y", "<Time Value=\"0\"/>", "<Time Value=\"0.25\"/>",
-          "CollectionType=\"Temporal\"", "TopologyType=\"2DRectMesh\" Dimensions=\"11 13\"",
-          "GeometryType=\"VXVY\"", "Center=\"Cell\"", "Dimensions=\"10 12\""})
+          "fields_000010.h5:/y", "<Time Value=\"0\"/>", "<Time Value=\"0.25\"/>", "CollectionType=\"Temporal\"",
+          "TopologyType=\"2DRectMesh\" Dimensions=\"11 13\"", "GeometryType=\"VXVY\"", "Center=\"Cell\"",
+          "Dimensions=\"10 12\""})
         EXPECT_NE(xdmf.find(needle), std::string::npos) << needle;
 }
 
@@ -443,8 +440,7 @@ TEST(TimeSeries, RestartKeepsRowsUpToRestartTime) {
     }
     MPI_Barrier(MPI_COMM_WORLD);
     if (g.rank() != 0) return;
-    const std::string expected_text =
-        "t,cfl,F/x\n0,0,0.3333333333333333\n0.25,0.1,0.25\n0.5,0.2,0.2\n0.625,9,8\n";
+    const std::string expected_text = "t,cfl,F/x\n0,0,0.3333333333333333\n0.25,0.1,0.25\n0.5,0.2,0.2\n0.625,9,8\n";
     EXPECT_EQ(read_text(dir.path() / "timeseries.csv"), expected_text);
     Hdf5File f = Hdf5File::open_read(dir.path() / "timeseries.h5");
     EXPECT_EQ(f.read("t"), (std::vector<double>{0, 0.25, 0.5, 0.625}));

@@ -48,9 +48,12 @@ std::array<double, 2> compare_np(CaseConfig c, int steps, std::array<int, 2> ran
         const auto vs = gather_global(serial.grid(), serial.velocity().v, 0, 1);
         const auto ps = gather_global(serial.grid(), serial.pressure());
         double umax = 0, pmax = 0, du = 0, dp = 0;
-        for (std::size_t k = 0; k < u.size(); ++k) umax = std::max(umax, std::abs(us[k])), du = std::max(du, std::abs(u[k] - us[k]));
-        for (std::size_t k = 0; k < v.size(); ++k) umax = std::max(umax, std::abs(vs[k])), du = std::max(du, std::abs(v[k] - vs[k]));
-        for (std::size_t k = 0; k < p.size(); ++k) pmax = std::max(pmax, std::abs(ps[k])), dp = std::max(dp, std::abs(p[k] - ps[k]));
+        for (std::size_t k = 0; k < u.size(); ++k)
+            umax = std::max(umax, std::abs(us[k])), du = std::max(du, std::abs(u[k] - us[k]));
+        for (std::size_t k = 0; k < v.size(); ++k)
+            umax = std::max(umax, std::abs(vs[k])), du = std::max(du, std::abs(v[k] - vs[k]));
+        for (std::size_t k = 0; k < p.size(); ++k)
+            pmax = std::max(pmax, std::abs(ps[k])), dp = std::max(dp, std::abs(p[k] - ps[k]));
         diff = {du / umax, dp / pmax};
         std::printf("np=%d (%dx%d patches) vs np=1 after %d steps: max |du|/|u|max = %.2e, max |dp|/|p|max = %.2e\n",
                     g.size(), g.ranks()[0], g.ranks()[1], steps, diff[0], diff[1]);
@@ -88,7 +91,8 @@ CaseConfig channel(OutflowKind outflow) {
     CaseConfig c;
     c.x = AxisConfig{0.0, 3.0, 60, "uniform", 2.0, 1.05, {}};
     c.y = AxisConfig{0.0, 1.0, 24, "tanh", 1.5, 1.05, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 1.0, OutflowKind::convective};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 1.0, OutflowKind::convective};
     c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, outflow};
     c.boundary[2].type = c.boundary[3].type = BoundaryType::wall;
     c.initial_velocity = {0.5, 0.1};
@@ -164,9 +168,10 @@ TEST(Parallel, ImplicitDiffusionChannelAndPeriodic) {
         c.diffusion = DiffusionScheme::implicit_euler;
         return c;
     };
-    for (const auto& d : {compare_np(implicit(channel(OutflowKind::zero_stress)), 100, {2, 1}),
-                          compare_np(implicit(channel(OutflowKind::convective)), 100, {1, 2}),
-                          compare_np(implicit(periodic()), 100, {2, 1}), compare_np(implicit(periodic()), 100, {1, 2})}) {
+    for (const auto& d :
+         {compare_np(implicit(channel(OutflowKind::zero_stress)), 100, {2, 1}),
+          compare_np(implicit(channel(OutflowKind::convective)), 100, {1, 2}),
+          compare_np(implicit(periodic()), 100, {2, 1}), compare_np(implicit(periodic()), 100, {1, 2})}) {
         EXPECT_LT(d[0], kTolerance);
         EXPECT_LT(d[1], kTolerance);
     }
@@ -180,8 +185,10 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
     CaseConfig c;
     c.x = AxisConfig{0.0, 0.8, 160, "uniform", 2.0, 1.05, {}};
     c.y = AxisConfig{0.0, 0.41, 82, "uniform", 2.0, 1.05, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 0.3, OutflowKind::convective};
-    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::zero_stress};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 0.3, OutflowKind::convective};
+    c.boundary[1] =
+        BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::zero_stress};
     c.viscosity = 1e-3;
     c.density = 1.0;
     c.cfl = 0.5;
@@ -202,8 +209,8 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
             f = measure_forces(model);
         }
         const BodyForces& b = f[0];
-        return std::array<double, 6>{b.forcing.x(), b.forcing.y(), b.surface.pressure.x(), b.surface.pressure.y(),
-                                     b.surface.viscous.x(), b.surface.viscous.y()};
+        return std::array<double, 6>{b.forcing.x(),          b.forcing.y(),         b.surface.pressure.x(),
+                                     b.surface.pressure.y(), b.surface.viscous.x(), b.surface.viscous.y()};
     };
     // Two patches split in y: 82 cells at 41 puts the patch boundary at y = 0.205, through the cylinder.
     const auto [parallel, serial] = parallel_and_serial(run);
@@ -211,8 +218,10 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
     double worst = 0.0;
     for (int k = 0; k < 6; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / scale);
     if (rank() == 0)
-        std::printf("fixed cylinder, np=2 (split in y through the cylinder) vs np=1: max force difference %.2e of "
-                    "the drag\n", worst);
+        std::printf(
+            "fixed cylinder, np=2 (split in y through the cylinder) vs np=1: max force difference %.2e of "
+            "the drag\n",
+            worst);
     EXPECT_LT(worst, 1e-8);
 }
 
@@ -223,7 +232,8 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
     CaseConfig c;
     c.x = AxisConfig{-2.0, 6.0, 128, "uniform", 2.0, 1.05, {}};
     c.y = AxisConfig{-2.0, 2.0, 64, "uniform", 2.0, 1.05, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
     c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
     c.boundary[2].type = c.boundary[3].type = BoundaryType::slip;
     c.initial_velocity = {1.0, 0.0};
@@ -255,16 +265,19 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
             for (int i = 0; i < solver.grid().nx(); ++i) kmax = std::max(kmax, turbulence.k()(i, j));
         MPI_Allreduce(MPI_IN_PLACE, &kmax, 1, MPI_DOUBLE, MPI_MAX, comm);
         const BodyForces& b = f[0];
-        return std::array<double, 8>{b.forcing.x(), b.forcing.y(), b.surface.pressure.x(), b.surface.viscous.x(),
-                                     b.surface.turbulent.x(), b.surface.turbulent.y(), b.surface.pressure.y(), kmax};
+        return std::array<double, 8>{
+            b.forcing.x(),           b.forcing.y(),           b.surface.pressure.x(), b.surface.viscous.x(),
+            b.surface.turbulent.x(), b.surface.turbulent.y(), b.surface.pressure.y(), kmax};
     };
     const auto [parallel, serial] = parallel_and_serial(run);
     double worst = 0.0;
     for (int k = 0; k < 7; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / std::abs(serial[0]));
     const double k_difference = std::abs(parallel[7] - serial[7]) / serial[7];
     if (rank() == 0)
-        std::printf("k-epsilon square, np=2 (split in y through the square) vs np=1: max force difference %.2e of "
-                    "the drag (turbulent x part %.3e N), max k difference %.2e\n", worst, serial[4], k_difference);
+        std::printf(
+            "k-epsilon square, np=2 (split in y through the square) vs np=1: max force difference %.2e of "
+            "the drag (turbulent x part %.3e N), max k difference %.2e\n",
+            worst, serial[4], k_difference);
     EXPECT_LT(worst, 1e-8);
     EXPECT_LT(k_difference, 1e-8);
 }

@@ -61,7 +61,8 @@ TEST(PoissonSolver, ConvergesOnUniformAndStretchedGrids) {
     for (bool stretched : {false, true})
         for (bool dirichlet : {false, true}) {
             const Result r = solve(stretched, dirichlet, 1e-10);
-            SCOPED_TRACE(std::string(stretched ? "stretched" : "uniform") + (dirichlet ? ", Dirichlet side" : ", all Neumann"));
+            SCOPED_TRACE(std::string(stretched ? "stretched" : "uniform") +
+                         (dirichlet ? ", Dirichlet side" : ", all Neumann"));
             EXPECT_LE(r.stats.relative_residual, 1e-10);
             EXPECT_LE(r.stats.iterations, 30);
             EXPECT_LT(r.residual, 1e-6);

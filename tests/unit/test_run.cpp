@@ -104,18 +104,18 @@ TEST(Restart, StopAndRestartEqualsStraightRun) {
     }
 }
 
-// The same with a free body that hits the bed (four impacts, then rest) after the restart: its state, held accelerations,
-// contact state and enclosed fluid momentum are in the checkpoint, so its time series, its contact log and
-// the fields match the straight run bit for bit.
+// The same with a free body that hits the bed (four impacts, then rest) after the restart: its state, held
+// accelerations, contact state and enclosed fluid momentum are in the checkpoint, so its time series, its contact log
+// and the fields match the straight run bit for bit.
 TEST(Restart, FreeBodyRestartEqualsStraightRun) {
     const fs::path straight_dir = scratch("free_straight"), split_dir = scratch("free_split");
     RunOptions quiet;
     quiet.quiet = true;
-    CaseConfig config = load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/settling_cylinder/case.yaml",
-                                  {"domain.x={start: 0.0, end: 0.01, cells: 32}",
-                                   "domain.y={start: 0.0, end: 0.01, cells: 32}", "bodies.disc.centre=[0.005, 0.0025]",
-                                   "bodies.disc.density=3000", "time.end=0.08", "contact.distance=0.0003",
-                                   "output={fields_interval: 0.0, plots: false}"});
+    CaseConfig config =
+        load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/settling_cylinder/case.yaml",
+                  {"domain.x={start: 0.0, end: 0.01, cells: 32}", "domain.y={start: 0.0, end: 0.01, cells: 32}",
+                   "bodies.disc.centre=[0.005, 0.0025]", "bodies.disc.density=3000", "time.end=0.08",
+                   "contact.distance=0.0003", "output={fields_interval: 0.0, plots: false}"});
     RunOptions a = quiet;
     a.out_dir = straight_dir;
     const RunSummary straight = run_simulation(config, a, MPI_COMM_WORLD);
@@ -195,8 +195,8 @@ TEST(Cli, RunsACaseAndWritesEveryOutput) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("cell-steps per second"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("plotting failed"), std::string::npos) << r.output;
-    for (const char* f : {"case.yaml", "timeseries.csv", "timeseries.h5", "fields.xdmf", "summary.txt",
-                          "timeseries.png", "fields.png"})
+    for (const char* f :
+         {"case.yaml", "timeseries.csv", "timeseries.h5", "fields.xdmf", "summary.txt", "timeseries.png", "fields.png"})
         EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
     EXPECT_TRUE(latest_checkpoint(dir / "out").has_value());
 }
@@ -208,8 +208,10 @@ TEST(Cli, SweepRunsEachValueAndChecksThemAllFirst) {
     const fs::path dir = scratch("cli_sweep");
     write_text(dir / "case.yaml", kSmallCavity);
     const std::string c = "run '" + (dir / "case.yaml").string() + "' --set time.end=0.05 --out ";
-    const auto r = run_chute(c + "'" + (dir / "out").string() + "' --sweep fluid.viscosity=0.01,0.02 --sweep "
-                                 "'boundaries.top.velocity=[1.0, 0.0],[2.0, 0.0]'", dir);
+    const auto r = run_chute(c + "'" + (dir / "out").string() +
+                                 "' --sweep fluid.viscosity=0.01,0.02 --sweep "
+                                 "'boundaries.top.velocity=[1.0, 0.0],[2.0, 0.0]'",
+                             dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     for (const char* run : {"fluid.viscosity=0.01,boundaries.top.velocity=_1.0,_0.0_",
                             "fluid.viscosity=0.02,boundaries.top.velocity=_2.0,_0.0_"})
@@ -282,8 +284,7 @@ TEST(Cli, DivergingRunStopsCleanlyKeepingOutputs) {
     for (double x : u) ASSERT_TRUE(std::isfinite(x));
     EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.csv"));
     EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.h5"));
-    for (const auto& e : fs::directory_iterator(dir / "out"))
-        EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+    for (const auto& e : fs::directory_iterator(dir / "out")) EXPECT_NE(e.path().extension(), ".tmp") << e.path();
 }
 
 // Ctrl-C (SIGINT) or a batch system's SIGTERM: the run finishes its step, writes a checkpoint, says how

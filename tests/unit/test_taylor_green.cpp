@@ -111,12 +111,14 @@ TEST(TaylorGreen, PressureSecondOrderAtHalfStep) {
         double err = 0.0;
         for (int j = 0; j < s.grid().ny(); ++j)
             for (int i = 0; i < s.grid().nx(); ++i)
-                err = std::max(err, std::abs(s.pressure()(i, j) + 0.25 * (std::cos(2 * X.c(i)) + std::cos(2 * Y.c(j))) * decay));
+                err = std::max(
+                    err, std::abs(s.pressure()(i, j) + 0.25 * (std::cos(2 * X.c(i)) + std::cos(2 * Y.c(j))) * decay));
         MPI_Allreduce(MPI_IN_PLACE, &err, 1, MPI_DOUBLE, MPI_MAX, s.grid().comm());
         errors[k++] = err;
     }
     const double p1 = std::log2(errors[0] / errors[1]), p2 = std::log2(errors[1] / errors[2]);
-    print_on_rank0("TGV pressure at t - dt/2: errors %.3e %.3e %.3e, orders %.3f %.3f\n", errors[0], errors[1], errors[2], p1, p2);
+    print_on_rank0("TGV pressure at t - dt/2: errors %.3e %.3e %.3e, orders %.3f %.3f\n", errors[0], errors[1],
+                   errors[2], p1, p2);
     EXPECT_GE(p1, 1.9);
     EXPECT_GE(p2, 1.9);
 }

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "case_file.hpp"
 #include "diffusion.hpp"
 #include "flow_solver.hpp"
 #include "immersed_boundary.hpp"
 #include "k_epsilon.hpp"
 #include "print_on_rank0.hpp"
-#include "case_file.hpp"
 #include "wall_function.hpp"
 
 using namespace chute;
@@ -67,7 +67,7 @@ TEST(KEpsilon, DecayOfHomogeneousTurbulenceFollowsTheClosedForm) {
         c.turbulence.velocity_scale = 1.0;
         FlowSolver s(c, MPI_COMM_WORLD);
         std::vector<Body> no_bodies;
-    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
+        ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
         KEpsilon model(k_epsilon_settings(c), s, none);
         const double k0 = model.inflow_k(), e0 = model.inflow_epsilon(), T = 2.0 * k0 / e0;
         const int steps = static_cast<int>(std::lround(T / dt));
@@ -167,7 +167,7 @@ TEST(KEpsilon, KatoLaunderProductionVanishesInPureStrain) {
         c.turbulence.kato_launder = kl;
         FlowSolver s(c, MPI_COMM_WORLD);
         std::vector<Body> no_bodies;
-    ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
+        ImmersedBoundary none(s.grid(), immersed_boundary_settings(c), no_bodies);
         KEpsilon model(k_epsilon_settings(c), s, none);
         const Grid& g = s.grid();
         const double nu_t = model.eddy_viscosity()(3, 3), a = 0.7, shear_rate = 1.3;

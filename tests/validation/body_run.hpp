@@ -33,8 +33,11 @@ class BodyRun {
 public:
     // The model keeps its own copy of the case: a temporary `c` is fine.
     BodyRun(const CaseConfig& c, MPI_Comm comm)
-        : model(c, comm), solver(model.flow()), ibm(dynamic_cast<ImmersedBoundary&>(model.carrier())),
-          free(model.free_bodies()), turbulence(model.turbulence()) {}
+        : model(c, comm),
+          solver(model.flow()),
+          ibm(dynamic_cast<ImmersedBoundary&>(model.carrier())),
+          free(model.free_bodies()),
+          turbulence(model.turbulence()) {}
 
     // One step (dt <= 0: the stable one); returns the forces on every body.
     const std::vector<BodyForces>& step(double dt = 0.0) {

@@ -153,13 +153,15 @@ TEST(BluffBodies, OscillatingCylinderDutsch) {
         rms_surface += std::pow(ours(phase, true) - row[2], 2) / ref.size();
     }
     for (const auto& h : run.history)
-        if (h.t >= t0) max_ours = std::max(max_ours, 2.0 * h.f.forcing.x()), min_ours = std::min(min_ours, 2.0 * h.f.forcing.x());
+        if (h.t >= t0)
+            max_ours = std::max(max_ours, 2.0 * h.f.forcing.x()), min_ours = std::min(min_ours, 2.0 * h.f.forcing.x());
     rms = std::sqrt(rms);
     rms_surface = std::sqrt(rms_surface);
     if (root())
-        std::printf("oscillating cylinder (Re 100, KC 5): C max %.3f min %.3f (Dütsch +3.30/-3.29); rms difference "
-                    "from Dütsch Fig. 10: forcing %.3f, surface %.3f\n",
-                    max_ours, min_ours, rms, rms_surface);
+        std::printf(
+            "oscillating cylinder (Re 100, KC 5): C max %.3f min %.3f (Dütsch +3.30/-3.29); rms difference "
+            "from Dütsch Fig. 10: forcing %.3f, surface %.3f\n",
+            max_ours, min_ours, rms, rms_surface);
     EXPECT_NEAR(max_ours, 3.30, 0.33);
     EXPECT_NEAR(min_ours, -3.29, 0.33);
     EXPECT_LT(rms, 0.25);

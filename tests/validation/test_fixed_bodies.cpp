@@ -24,7 +24,8 @@ struct Coefficients {
 Coefficients dfg_2d1(int cells_per_d, double t_end) {
     const CaseConfig c = load_case(kExamples + "schaefer_turek_2d1/case.yaml",
                                    {"domain.x={start: 0.0, end: 2.2, spacing: clustered, core: [0.05, 0.6], "
-                                    "core_cells: " + std::to_string(55 * cells_per_d / 10) + ", ratio: 1.03}",
+                                    "core_cells: " +
+                                        std::to_string(55 * cells_per_d / 10) + ", ratio: 1.03}",
                                     "domain.y.cells=" + std::to_string(41 * cells_per_d / 10)});
     BodyRun run(c, MPI_COMM_WORLD);
     run.run_to(t_end);
@@ -33,8 +34,10 @@ Coefficients dfg_2d1(int cells_per_d, double t_end) {
     Coefficients r;
     r.cd_forcing = run.mean(t0, t1, [](const BodyForces& f) { return f.forcing.x(); }) / q;
     r.cl_forcing = run.mean(t0, t1, [](const BodyForces& f) { return f.forcing.y(); }) / q;
-    r.cd_surface = run.mean(t0, t1, [](const BodyForces& f) { return f.surface.pressure.x() + f.surface.viscous.x(); }) / q;
-    r.cl_surface = run.mean(t0, t1, [](const BodyForces& f) { return f.surface.pressure.y() + f.surface.viscous.y(); }) / q;
+    r.cd_surface =
+        run.mean(t0, t1, [](const BodyForces& f) { return f.surface.pressure.x() + f.surface.viscous.x(); }) / q;
+    r.cl_surface =
+        run.mean(t0, t1, [](const BodyForces& f) { return f.surface.pressure.y() + f.surface.viscous.y(); }) / q;
     r.cd_pressure = run.mean(t0, t1, [](const BodyForces& f) { return f.surface.pressure.x(); }) / q;
     r.cd_viscous = run.mean(t0, t1, [](const BodyForces& f) { return f.surface.viscous.x(); }) / q;
     r.slip = run.last[0].max_slip / 0.3;
@@ -49,10 +52,11 @@ Coefficients dfg_2d1(int cells_per_d, double t_end) {
     };
     r.delta_p = wall_p({0.15, 0.2}) - wall_p({0.25, 0.2});
     if (run.solver.grid().rank() == 0)
-    std::printf("DFG 2D-1, D/h = %d: C_D forcing %.4f surface %.4f (pressure %.4f, viscous %.4f); C_L forcing "
-                "%.5f surface %.5f; Delta p %.5f; max slip / U_max %.2e\n",
-                cells_per_d, r.cd_forcing, r.cd_surface, r.cd_pressure, r.cd_viscous, r.cl_forcing, r.cl_surface,
-                r.delta_p, r.slip);
+        std::printf(
+            "DFG 2D-1, D/h = %d: C_D forcing %.4f surface %.4f (pressure %.4f, viscous %.4f); C_L forcing "
+            "%.5f surface %.5f; Delta p %.5f; max slip / U_max %.2e\n",
+            cells_per_d, r.cd_forcing, r.cd_surface, r.cd_pressure, r.cd_viscous, r.cl_forcing, r.cl_surface, r.delta_p,
+            r.slip);
     return r;
 }
 

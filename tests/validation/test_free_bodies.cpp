@@ -60,10 +60,13 @@ TEST(FreeBodies, LightDiscRisesWithItsAddedMass) {
     run.run_to(t1, 0.0005);
     const BodyState& s = run.ibm.bodies()[0].state();
     const double a_mean = (s.velocity.y() - v0) / (t1 - t0);
-    const double a_coupled = (m_f - m_s) * 9.81 / (m_s + ca * m_f), a_potential = (m_f - m_s) * 9.81 / (m_s + 1.02 * m_f);
+    const double a_coupled = (m_f - m_s) * 9.81 / (m_s + ca * m_f),
+                 a_potential = (m_f - m_s) * 9.81 / (m_s + 1.02 * m_f);
     if (root())
-        std::printf("light disc: mean acceleration %.4f m/s^2; from the prescribed disc's C_a %.4f: %.4f; potential "
-                    "flow (C_a 1.02): %.4f\n", a_mean, ca, a_coupled, a_potential);
+        std::printf(
+            "light disc: mean acceleration %.4f m/s^2; from the prescribed disc's C_a %.4f: %.4f; potential "
+            "flow (C_a 1.02): %.4f\n",
+            a_mean, ca, a_coupled, a_potential);
     EXPECT_NEAR(a_mean, a_coupled, 0.03 * a_coupled);
     EXPECT_NEAR(a_mean, a_potential, 0.12 * a_potential);
     EXPECT_LT(std::abs(s.velocity.x()), 1e-3 * s.velocity.y());  // straight up (markers are not mirror-exact)
@@ -83,7 +86,9 @@ TEST(FreeBodies, SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber) {
         if (run.solver.time() >= 0.45) sum += run.ibm.bodies()[0].state().velocity.y(), ++n;
     }
     const double U = -sum / n, re_solid = 1250.0 * U * 0.0025 / 0.01;
-    if (root()) std::printf("settling disc: U = %.5f m/s, rho_s U d / mu = %.3f (rho_f U d / mu = %.3f)\n", U, re_solid, re_solid / 1.25);
+    if (root())
+        std::printf("settling disc: U = %.5f m/s, rho_s U d / mu = %.3f (rho_f U d / mu = %.3f)\n", U, re_solid,
+                    re_solid / 1.25);
     EXPECT_NEAR(re_solid, 17.3, 0.05 * 17.3);
     // It falls on the channel's axis (to 1 % of d: the markers are not exactly mirror-symmetric).
     EXPECT_NEAR(run.ibm.bodies()[0].state().centre.x(), 0.01, 0.01 * 0.0025);

@@ -68,9 +68,14 @@ CavityResult run_cavity(int n, double re, int column, double t_max,
                 if (psi < r.psi_min) r.psi_min = psi, r.x_psi_min = X.line(i), r.y_psi_min = Y.line(j + 1);
             }
         }
-        std::printf("cavity Re %g, %d^2, %s: max |u - Ghia| = %.4f, max |v - Ghia| = %.4f, psi_min = %.6f at "
-                    "(%.4f, %.4f), steady rate %.1e at t = %.1f\n",
-                    re, n, scheme == ConvectionScheme::central ? "central" : scheme == ConvectionScheme::van_leer ? "van Leer" : "Koren", r.max_dev_u, r.max_dev_v, r.psi_min, r.x_psi_min, r.y_psi_min, r.steady_rate, s.time());
+        std::printf(
+            "cavity Re %g, %d^2, %s: max |u - Ghia| = %.4f, max |v - Ghia| = %.4f, psi_min = %.6f at "
+            "(%.4f, %.4f), steady rate %.1e at t = %.1f\n",
+            re, n,
+            scheme == ConvectionScheme::central    ? "central"
+            : scheme == ConvectionScheme::van_leer ? "van Leer"
+                                                   : "Koren",
+            r.max_dev_u, r.max_dev_v, r.psi_min, r.x_psi_min, r.y_psi_min, r.steady_rate, s.time());
     }
     MPI_Bcast(&r, sizeof r / sizeof(double), MPI_DOUBLE, 0, MPI_COMM_WORLD);
     return r;

@@ -92,8 +92,9 @@ struct PlaneFlow {
 };
 
 PlaneFlow inclined_channel(int cells_x, int cells_y) {
-    const CaseConfig c = load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/inclined_plane/case.yaml",
-                                   {"domain.x.cells=" + std::to_string(cells_x), "domain.y.cells=" + std::to_string(cells_y)});
+    const CaseConfig c =
+        load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/inclined_plane/case.yaml",
+                  {"domain.x.cells=" + std::to_string(cells_x), "domain.y.cells=" + std::to_string(cells_y)});
     BodyRun run(c, MPI_COMM_WORLD);
     run.run_to(c.end_time);
 
@@ -131,9 +132,10 @@ PlaneFlow inclined_channel(int cells_x, int cells_y) {
     MPI_Allreduce(MPI_IN_PLACE, &profile_error, 1, MPI_DOUBLE, MPI_MAX, g.comm());
     const PlaneFlow r{net / (u_max * length), gross / (u_max * length), profile_error / u_max};
     if (g.rank() == 0)
-        std::printf("inclined plane (30 deg), %dx%d: net flux %.2e u_max L, gross |u.n| flux %.2e u_max L, "
-                    "max slip after forcing %.2e u_max, profile error %.3f u_max\n",
-                    cells_x, cells_y, r.net_flux, r.gross_flux, run.last[0].max_slip / u_max, r.profile_error);
+        std::printf(
+            "inclined plane (30 deg), %dx%d: net flux %.2e u_max L, gross |u.n| flux %.2e u_max L, "
+            "max slip after forcing %.2e u_max, profile error %.3f u_max\n",
+            cells_x, cells_y, r.net_flux, r.gross_flux, run.last[0].max_slip / u_max, r.profile_error);
     return r;
 }
 

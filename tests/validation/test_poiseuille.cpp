@@ -28,7 +28,8 @@ double periodic_channel_error(int ny, double beta) {
     double err = 0.0;
     for (int j = 0; j < s.grid().ny(); ++j) {
         const double y = s.grid().ly().c(j);
-        for (int i = 0; i < s.grid().nx(); ++i) err = std::max(err, std::abs(s.velocity().u(i, j) - 4 * U * y * (1 - y)));
+        for (int i = 0; i < s.grid().nx(); ++i)
+            err = std::max(err, std::abs(s.velocity().u(i, j) - 4 * U * y * (1 - y)));
     }
     MPI_Allreduce(MPI_IN_PLACE, &err, 1, MPI_DOUBLE, MPI_MAX, s.grid().comm());
     return err / U;
@@ -43,7 +44,8 @@ TEST(Poiseuille, StretchedGridSecondOrder) {
     const double e16 = periodic_channel_error(16, 1.5), e32 = periodic_channel_error(32, 1.5),
                  e64 = periodic_channel_error(64, 1.5);
     const double p1 = std::log2(e16 / e32), p2 = std::log2(e32 / e64);
-    std::printf("Poiseuille, tanh-stretched: max error / U = %.3e %.3e %.3e, orders %.3f %.3f\n", e16, e32, e64, p1, p2);
+    std::printf("Poiseuille, tanh-stretched: max error / U = %.3e %.3e %.3e, orders %.3f %.3f\n", e16, e32, e64, p1,
+                p2);
     EXPECT_GE(p1, 1.9);
     EXPECT_GE(p2, 1.9);
 }
@@ -56,7 +58,8 @@ TEST(Poiseuille, InflowOutflowChannelKeepsTheParabola) {
     CaseConfig c;
     c.x = AxisConfig{0.0, 4.0, 64, "uniform", 2.0, 1.05, {}};
     c.y = AxisConfig{0.0, 1.0, 32, "tanh", 1.5, 1.05, {}};
-    c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 1.0, OutflowKind::convective};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, 1.0, OutflowKind::convective};
     c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
     c.boundary[2].type = c.boundary[3].type = BoundaryType::wall;
     c.viscosity = 0.05;
@@ -76,8 +79,10 @@ TEST(Poiseuille, InflowOutflowChannelKeepsTheParabola) {
     MPI_Allreduce(MPI_IN_PLACE, &err, 1, MPI_DOUBLE, MPI_MAX, s.grid().comm());
     MPI_Allreduce(MPI_IN_PLACE, &vmax, 1, MPI_DOUBLE, MPI_MAX, s.grid().comm());
     if (s.grid().rank() == 0)
-        std::printf("Poiseuille inflow/outflow: max |u - parabola| at x = 3.5: %.3e, max |v| %.3e, steady rate %.1e at t = %.1f\n",
-                    err, vmax, rate, s.time());
+        std::printf(
+            "Poiseuille inflow/outflow: max |u - parabola| at x = 3.5: %.3e, max |v| %.3e, steady rate %.1e at t = "
+            "%.1f\n",
+            err, vmax, rate, s.time());
     EXPECT_LT(rate, 1e-6);
     EXPECT_LT(err, 0.01);
     EXPECT_LT(vmax, 0.01);
@@ -94,7 +99,8 @@ TEST(Poiseuille, ZeroStressOutflowGivesTheExactPressureGradient) {
     c.x = AxisConfig{0.0, 4.0, 64, "uniform", 2.0, 1.05, {}};
     c.y = AxisConfig{0.0, 1.0, 32, "tanh", 1.5, 1.05, {}};
     c.boundary[0] = BoundaryConfig{BoundaryType::inflow, {0, 0}, InflowProfile::parabolic, U, OutflowKind::convective};
-    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::zero_stress};
+    c.boundary[1] =
+        BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::zero_stress};
     c.boundary[2].type = c.boundary[3].type = BoundaryType::wall;
     c.viscosity = nu;
     c.poisson_tolerance = 1e-10;
@@ -117,9 +123,10 @@ TEST(Poiseuille, ZeroStressOutflowGivesTheExactPressureGradient) {
     const double gradient = (sums[2] - sums[0]) / (sums[3] - sums[1]);
     const double exact = -8.0 * nu * U;
     if (s.grid().rank() == 0)
-        std::printf("Poiseuille zero-stress outflow: dp/dx = %.5f (exact %.5f, error %.2f %%), outflow flux %.6f "
-                    "(inflow 2/3), steady rate %.1e at t = %.1f\n",
-                    gradient, exact, 100 * std::abs(gradient / exact - 1), sums[4], rate, s.time());
+        std::printf(
+            "Poiseuille zero-stress outflow: dp/dx = %.5f (exact %.5f, error %.2f %%), outflow flux %.6f "
+            "(inflow 2/3), steady rate %.1e at t = %.1f\n",
+            gradient, exact, 100 * std::abs(gradient / exact - 1), sums[4], rate, s.time());
     EXPECT_LT(rate, 1e-6);
     EXPECT_NEAR(gradient, exact, 0.01 * std::abs(exact));
     EXPECT_NEAR(sums[4], 2.0 / 3.0, 1e-10);

@@ -20,15 +20,16 @@ struct ChannelResult {
 // u_tau = delta = 1, so U_b+ is the bulk velocity. Steady to 1e-10 relative change of U_b per unit time:
 // the driving force fixes tau_w = 1 at the steady state, so U_b+ is what the model decides.
 ChannelResult channel(double re_tau, int cells = 20) {
-    const CaseConfig c = load_case(kExamples + "turbulent_channel/case.yaml",
-                                   {"fluid.viscosity=" + std::to_string(1.0 / re_tau),
-                                    "domain.y.cells=" + std::to_string(cells)});
+    const CaseConfig c =
+        load_case(kExamples + "turbulent_channel/case.yaml",
+                  {"fluid.viscosity=" + std::to_string(1.0 / re_tau), "domain.y.cells=" + std::to_string(cells)});
     BodyRun run(c, MPI_COMM_WORLD);
     const Grid& g = run.solver.grid();
     auto bulk = [&] {
         double s[2] = {0.0, 0.0};
         for (int j = 0; j < g.ny(); ++j)
-            for (int i = 0; i < g.nx(); ++i) s[0] += run.solver.velocity().u(i, j) * g.lx().w(i) * g.ly().w(j), s[1] += g.lx().w(i) * g.ly().w(j);
+            for (int i = 0; i < g.nx(); ++i)
+                s[0] += run.solver.velocity().u(i, j) * g.lx().w(i) * g.ly().w(j), s[1] += g.lx().w(i) * g.ly().w(j);
         MPI_Allreduce(MPI_IN_PLACE, s, 2, MPI_DOUBLE, MPI_SUM, g.comm());
         return s[0] / s[1];
     };
@@ -58,9 +59,10 @@ ChannelResult channel(double re_tau, int cells = 20) {
 TEST(Turbulence, ChannelBulkVelocity) {
     const ChannelResult r550 = channel(550.0), r950 = channel(950.0);
     if (root())
-        std::printf("turbulent channel, 20 cells: Re_tau 550: U_b+ %.4f (1D solve 19.0965, DNS 18.40), C_f %.4e "
-                    "(5.91e-3); Re_tau 950: U_b+ %.4f (1D solve 20.4201, DNS 19.83), C_f %.4e (5.09e-3)\n",
-                    r550.bulk_plus, r550.friction, r950.bulk_plus, r950.friction);
+        std::printf(
+            "turbulent channel, 20 cells: Re_tau 550: U_b+ %.4f (1D solve 19.0965, DNS 18.40), C_f %.4e "
+            "(5.91e-3); Re_tau 950: U_b+ %.4f (1D solve 20.4201, DNS 19.83), C_f %.4e (5.09e-3)\n",
+            r550.bulk_plus, r550.friction, r950.bulk_plus, r950.friction);
     EXPECT_NEAR(r550.bulk_plus, 19.0965, 0.005 * 19.0965);
     EXPECT_NEAR(r950.bulk_plus, 20.4201, 0.005 * 20.4201);
     EXPECT_NEAR(r550.bulk_plus, 18.40, 0.06 * 18.40);
@@ -79,8 +81,10 @@ TEST(Turbulence, ChannelFrictionCoefficient) {
 
 // The answer does not depend on where the first cell centre sits inside the log layer (y+ 55, 27.5, 18).
 TEST(Turbulence, ChannelIndependentOfTheFirstCell) {
-    const double u10 = channel(550.0, 10).bulk_plus, u20 = channel(550.0, 20).bulk_plus, u30 = channel(550.0, 30).bulk_plus;
-    if (root()) std::printf("turbulent channel Re_tau 550: U_b+ %.4f (10 cells), %.4f (20), %.4f (30)\n", u10, u20, u30);
+    const double u10 = channel(550.0, 10).bulk_plus, u20 = channel(550.0, 20).bulk_plus,
+                 u30 = channel(550.0, 30).bulk_plus;
+    if (root())
+        std::printf("turbulent channel Re_tau 550: U_b+ %.4f (10 cells), %.4f (20), %.4f (30)\n", u10, u20, u30);
     EXPECT_NEAR(u10, u20, 0.01 * u20);
     EXPECT_NEAR(u30, u20, 0.01 * u20);
 }
@@ -112,8 +116,10 @@ TEST(Turbulence, SquareCylinderRe22000) {
             up.push_back(t[k - 1] + (t[k] - t[k - 1]) * (mean_cl - cl[k - 1]) / (cl[k] - cl[k - 1]));
     const double st = up.size() >= 2 ? (up.size() - 1) / (up.back() - up.front()) : NAN;
     if (root())
-        std::printf("square cylinder Re 22000, k-epsilon: mean C_D %.4f (forcing), %.4f (surface); C_L rms %.4f; "
-                    "St %.4f over %zu periods\n", cd, cds, std::sqrt(rms), st, up.size() ? up.size() - 1 : 0);
+        std::printf(
+            "square cylinder Re 22000, k-epsilon: mean C_D %.4f (forcing), %.4f (surface); C_L rms %.4f; "
+            "St %.4f over %zu periods\n",
+            cd, cds, std::sqrt(rms), st, up.size() ? up.size() - 1 : 0);
     EXPECT_GE(cd, 1.6);
     EXPECT_LE(cd, 2.2);
     EXPECT_GE(st, 0.12);
@@ -134,7 +140,9 @@ TEST(Turbulence, SquareCylinderDomainWithoutBodyMakesNoTurbulence) {
         for (int i = 0; i < run.solver.grid().nx(); ++i)
             mx[0] = std::max(mx[0], m.k()(i, j)), mx[1] = std::max(mx[1], m.eddy_viscosity()(i, j));
     MPI_Allreduce(MPI_IN_PLACE, mx, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    if (root()) std::printf("empty Lyn domain at t = 20: max k / k_in %.6f, max nu_t / nu_t,in %.6f\n", mx[0] / m.inflow_k(), mx[1] / nu_t_in);
+    if (root())
+        std::printf("empty Lyn domain at t = 20: max k / k_in %.6f, max nu_t / nu_t,in %.6f\n", mx[0] / m.inflow_k(),
+                    mx[1] / nu_t_in);
     EXPECT_LE(mx[0], m.inflow_k() * (1.0 + 1e-9));
     EXPECT_LE(mx[1], nu_t_in * (1.0 + 1e-9));
 }
@@ -163,8 +171,10 @@ TEST(Turbulence, StudyBlockFallsAtTheExperimentsSpeed) {
             break;
         }
     if (root())
-        std::printf("block in water, k-epsilon: terminal speed %.4f m/s (t = 1.5-4 s: %.4f-%.4f), t95 %.3f s; "
-                    "experiment 2.2 +/- 0.2, Beranger 2.10, study 1.7\n", terminal, lo, hi, t95);
+        std::printf(
+            "block in water, k-epsilon: terminal speed %.4f m/s (t = 1.5-4 s: %.4f-%.4f), t95 %.3f s; "
+            "experiment 2.2 +/- 0.2, Beranger 2.10, study 1.7\n",
+            terminal, lo, hi, t95);
     EXPECT_NEAR(terminal, 2.2, 0.2);
     EXPECT_LT(hi - lo, 0.04 * terminal);
     EXPECT_LT(t95, 1.5);
@@ -192,8 +202,9 @@ TEST(Turbulence, SlopeRunoutInWaterIsShorterThanInAir) {
         const double water = runout(angle, false), air = runout(angle, true);
         const double limit = angle == 45.0 ? 2.0 / 3.0 : 0.5;
         if (root())
-            std::printf("slope %.0f deg, k-epsilon: runout %.4f m in water, %.4f m in air, ratio %.3f (study: < %.3f)\n",
-                        angle, water, air, water / air, limit);
+            std::printf(
+                "slope %.0f deg, k-epsilon: runout %.4f m in water, %.4f m in air, ratio %.3f (study: < %.3f)\n", angle,
+                water, air, water / air, limit);
         EXPECT_LT(water / air, limit);
     }
 }
