@@ -15,6 +15,7 @@
 
 #include "case_file.hpp"
 #include "hdf5_file.hpp"
+#include "plausibility.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
 
@@ -67,7 +68,11 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     if (rank == 0)
         std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n", config.name.c_str(),
                     config.x.cells, config.y.cells, size, config.end_time, options.out_dir.string().c_str());
-    chute::install_stop_handlers();
+    if (rank == 0)
+        for (const std::string& w : chute::plausibility_warnings(config))
+            std::fprintf(stderr, "chute: warning: %s\n", w.c_str());
+    std::fflush(stdout);  // the header is out before anything else happens, even when stdout is a file
+    chute::install_stop_handlers(options.out_dir);
     const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
     if (rank == 0) {
         const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
@@ -205,7 +210,7 @@ int main(int argc, char** argv) {
     } catch (const chute::CaseError& e) {
         if (rank == 0) std::fprintf(stderr, "chute: error in the case: %s\n", e.what());
         code = 2;
-    } catch (const chute::RunDiverged& e) {
+    } catch (const chute::RunFailure& e) {
         if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
         code = 3;
     } catch (const std::exception& e) {

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
+
+#include "run_failure.hpp"
 
 namespace chute {
 
@@ -97,6 +100,17 @@ double press(BodyState& s, double dt, const Outline& outline, const Obstacle& ob
     return dt;
 }
 
+std::string stuck_in_contact(const std::string& body, double t, double done, double dt, int passes,
+                             const ContactState& contact, const std::vector<Obstacle>& obstacles) {
+    const int on = contact.pressed_on >= 0 ? contact.pressed_on : contact.resting_on;
+    std::ostringstream m;
+    m << "contact: body '" << body << "' went through " << passes << " contact events in one step of " << dt
+      << " s without reaching its end (stuck at t = " << t + done;
+    if (on >= 0) m << ", on '" << obstacles[on].name << "'";
+    m << "); check contact.law, contact.duration, contact.rest_speed and contact.distance";
+    return m.str();
+}
+
 }  // namespace
 
 std::optional<double> time_of_impact(const Outline& outline, const BodyState& s, const Obstacle& ob, double T) {
@@ -134,7 +148,14 @@ std::vector<ContactEvent> move_with_contacts(BodyState& s, ContactState& contact
                                              const ContactConfig& config) {
     std::vector<ContactEvent> events;
     double done = 0.0;
+    // Each pass ends the step or reaches an event (an impact, a slide stopped by friction, a soft contact
+    // opened or closed); impulse laws settle a body after 1000 impacts in a step (below), so a step that
+    // needs more passes than this is caught in a loop of events that do not advance time.
+    constexpr int kMaxPasses = 10000;
+    int passes = 0;
     while (done < dt) {
+        if (++passes > kMaxPasses)
+            throw RunFailure(stuck_in_contact(body_name, t, done, dt, kMaxPasses, contact, obstacles));
         const double remaining = dt - done;
         if (contact.pressed_on >= 0) {  // soft law: press on until the body leaves or the step ends
             const Obstacle& ob = obstacles[contact.pressed_on];

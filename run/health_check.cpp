@@ -29,7 +29,25 @@ std::optional<std::string> HealthCheck::problem(const Model& model, const StepSt
             << " s (the velocity is blowing up)";
     else
         msg << "max |div u| dt = " << div * step.dt << " exceeds numerics.divergence_limit = " << divergence_limit_;
+    if (poisson_at_bound(step)) msg << "; " << poisson_bound_text(step);
     msg << " (dt = " << step.dt << "; try a smaller numerics.cfl, a finer grid, or the van_leer scheme).";
+    return msg.str();
+}
+
+std::optional<std::string> HealthCheck::warning(const Model& model, const StepStats& step) {
+    if (warned_poisson_ || !poisson_at_bound(step)) return std::nullopt;
+    warned_poisson_ = true;
+    std::ostringstream msg;
+    msg << "step " << model.flow().step() << ", t = " << model.flow().time() << ": " << poisson_bound_text(step)
+        << "; the run goes on while max |div u| dt stays below numerics.divergence_limit (noted once)";
+    return msg.str();
+}
+
+std::string HealthCheck::poisson_bound_text(const StepStats& step) const {
+    std::ostringstream msg;
+    msg << "the pressure solve stopped at numerics.poisson.max_iterations = " << poisson_max_iterations_
+        << " with relative residual " << step.poisson_residual
+        << " (numerics.poisson.tolerance = " << poisson_tolerance_ << ")";
     return msg.str();
 }
 

@@ -40,6 +40,19 @@ double next_dt(const Model& model) {
     return dt >= remaining ? remaining : dt > 0.5 * remaining ? 0.5 * remaining : dt;
 }
 
+// Where a step failed: its number, and the time it started from (the last completed one).
+std::string where_failed(const Model& model) {
+    std::ostringstream m;
+    m << "run stopped in step " << model.flow().step() + 1 << ", after t = " << model.flow().time() << ": ";
+    return m.str();
+}
+
+// A run that cannot go on keeps what it has written: flush, then say where it is.
+[[noreturn]] void stop_failed(RunOutputs& outputs, const RunOptions& options, const std::string& why) {
+    outputs.flush();
+    throw RunFailure(why + " Outputs written so far are kept in " + options.out_dir.string());
+}
+
 bool finished(const Model& model, const RunSummary& summary) {
     const CaseConfig& c = model.config();
     return model.flow().time() >= c.end_time - 1e-12 * c.end_time || (c.max_steps >= 0 && summary.steps >= c.max_steps);
@@ -129,7 +142,12 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
     const auto loop_start = clock::now();
     while (!finished(*model, summary)) {
         const auto step_start = clock::now();
-        const StepStats step = take_step(*model, next_dt(*model), &stages);
+        StepStats step;
+        try {
+            step = take_step(*model, next_dt(*model), &stages);
+        } catch (const RunFailure& e) {
+            stop_failed(outputs, options, where_failed(*model) + e.what() + ".");
+        }
         const std::vector<BodyForces> forces = measure_forces(*model, &stages);
         FlowHealth health;
         std::optional<std::string> problem;
@@ -138,10 +156,9 @@ RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, M
             health = flow_health(model->flow());
             problem = health_check.problem(*model, step, health);
         }
-        if (problem) {
-            outputs.flush();
-            throw RunDiverged(*problem + " Outputs written so far are kept in " + options.out_dir.string());
-        }
+        if (problem) stop_failed(outputs, options, *problem);
+        if (const auto note = health_check.warning(*model, step); note && Progress::is_root(*model))
+            std::fprintf(stderr, "chute: warning: %s\n", note->c_str());
         {
             auto timed = stages.scope("outputs");
             outputs.after_step(step, health, forces);

@@ -15,14 +15,9 @@
 
 #include "case_config.hpp"
 #include "flow_solver.hpp"
+#include "run_failure.hpp"
 
 namespace chute {
-
-// The run left the stable regime: NaN/Inf in the fields or a divergence above numerics.divergence_limit.
-class RunDiverged : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 struct RunOptions {
     std::filesystem::path out_dir = "results";
@@ -50,7 +45,9 @@ struct RunSummary {
     std::string bodies;  // per free body: fall speed, impacts, rebound height, runout, peak forces
 };
 
-// Runs the case on `comm`; throws RunDiverged, CaseError-like std::runtime_error for bad restarts.
+// Runs the case on `comm`. Throws RunFailure (core/run_failure.hpp) when the run cannot go on: it left the
+// stable regime (health_check.hpp) or a step reached one of the method's bounds; the outputs written so far
+// are flushed first and the message says where they are. Bad restarts throw std::runtime_error.
 RunSummary run_simulation(const CaseConfig& config, const RunOptions& options, MPI_Comm comm);
 
 // Human-readable timing summary (printed at the end of a run).

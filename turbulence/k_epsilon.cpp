@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
+#include "run_failure.hpp"
 #include "scalar_transport.hpp"
 #include "wall_function.hpp"
 
@@ -233,18 +236,43 @@ void KEpsilon::update(double dt) {
 
 // Explicit diffusion of k (the larger diffusivity, sigma_k <= sigma_eps) is stable for
 // h (nu + nu_t / sigma_k)(1/dx^2 + 1/dy^2) <= numerics.diffusion_number (time_step_control.hpp).
+// More than turbulence.max_substeps is not a run that will end: it stops, naming the diffusivity that asked
+// for them (fluid.viscosity 1000 for water's 1e-6 asks for ~1e9 sub-steps in a 0.01 s step).
 int KEpsilon::substeps_for(double dt) const {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     const Field2D& fluid = carrier_.fluid_cells();
-    double rate = 0.0;
+    double peak[2] = {0.0, 0.0};  // the limit's rate 1/h, and the largest nu_t
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i)
-            if (fluid(i, j) != 0.0)
-                rate = std::max(rate, (settings_.viscosity + model_nu_t_(i, j) / C::sigma_k) *
-                                          (1.0 / (X.w(i) * X.w(i)) + 1.0 / (Y.w(j) * Y.w(j))));
-    MPI_Allreduce(MPI_IN_PLACE, &rate, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
-    return std::max(1, static_cast<int>(std::ceil(dt * rate / settings_.diffusion_number)));
+            if (fluid(i, j) != 0.0) {
+                peak[0] = std::max(peak[0], (settings_.viscosity + model_nu_t_(i, j) / C::sigma_k) *
+                                                (1.0 / (X.w(i) * X.w(i)) + 1.0 / (Y.w(j) * Y.w(j))));
+                peak[1] = std::max(peak[1], model_nu_t_(i, j));
+            }
+    MPI_Allreduce(MPI_IN_PLACE, peak, 2, MPI_DOUBLE, MPI_MAX, grid_.comm());
+    const double needed = std::max(1.0, std::ceil(dt * peak[0] / settings_.diffusion_number));
+    if (!(needed <= settings_.model.max_substeps)) throw RunFailure(too_many_substeps(needed, dt, peak[1]));
+    return static_cast<int>(needed);
+}
+
+std::string KEpsilon::too_many_substeps(double needed, double dt, double max_nu_t) const {
+    constexpr double water = 1.0e-6;  // m^2/s at 20 C
+    const double nu = settings_.viscosity;
+    std::ostringstream m;
+    m << "the k-epsilon transport would need " << std::setprecision(2) << needed << " sub-steps in one step of "
+      << std::setprecision(3) << dt << " s (turbulence.max_substeps = " << settings_.model.max_substeps << "): ";
+    if (!std::isfinite(needed))
+        m << "the eddy viscosity is no longer finite";
+    else if (nu >= max_nu_t / C::sigma_k)
+        m << "fluid.viscosity " << std::setprecision(6) << nu << " m^2/s is " << std::setprecision(2) << nu / water
+          << " times water's (1e-06 m^2/s); check its units (kinematic viscosity, m^2/s)";
+    else
+        m << "the eddy viscosity reaches " << std::setprecision(3) << max_nu_t << " m^2/s, " << std::setprecision(2)
+          << max_nu_t / nu
+          << " times fluid.viscosity (a runaway nu_t: refine the grid, lower numerics.cfl or check "
+             "turbulence.intensity and turbulence.length_scale)";
+    return m.str();
 }
 
 // nu_t = C_mu k^2 / eps in the fluid, 0 inside bodies, at least the wall eddy viscosity in the immersed

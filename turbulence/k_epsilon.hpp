@@ -87,6 +87,7 @@ private:
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
     void refresh_eddy_viscosity();
     int substeps_for(double dt) const;
+    std::string too_many_substeps(double needed, double dt, double max_nu_t) const;
 
     KEpsilonSettings settings_;
     FlowSolver& flow_;

@@ -17,6 +17,7 @@ struct TurbulenceConfig {
     double production_limit = 10.0;  // P_k <= limit * eps (0: no limiter)
     bool kato_launder = false;       // P_k = nu_t S Omega (Kato & Launder 1993) instead of nu_t S^2
     double image_distance = 2.0;     // cells: where wall functions sample the flow beside an immersed surface
+    int max_substeps = 1000;         // explicit transport sub-steps in one flow step before the run stops
 };
 
 // The schema's turbulence section (io/case_reader.hpp) and its reading.

@@ -57,6 +57,14 @@ std::vector<CaseKey> turbulence_keys() {
          .min = above(0.0),
          .meaning = "Distance from an immersed surface, in cells along the normal, of the image point where "
                     "the wall function samples the tangential velocity and k (outside the forcing's reach)."},
+        {.path = "turbulence.max_substeps",
+         .type = K::integer,
+         .default_value = "1000",
+         .min = at_least(1),
+         .meaning = "Most sub-steps the explicit transport of k and epsilon may take in one flow step (each "
+                    "within its diffusion limit, numerics.diffusion_number). A step that would need more "
+                    "stops the run (exit code 3) with the diffusivity that asked for them: usually a "
+                    "viscosity given in the wrong units, or a runaway eddy viscosity."},
     };
 }
 
@@ -70,6 +78,7 @@ TurbulenceConfig read_turbulence(const CaseReader& r) {
     c.production_limit = r.number("turbulence.production_limit");
     c.kato_launder = r.choice("turbulence.production") == "kato_launder";
     c.image_distance = r.number("turbulence.image_distance");
+    c.max_substeps = static_cast<int>(r.integer("turbulence.max_substeps"));
     return c;
 }
 

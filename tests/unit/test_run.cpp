@@ -305,3 +305,75 @@ TEST(Cli, SignalStopsWithACheckpointToContinueFrom) {
     EXPECT_NE(resumed.output.find("10 steps"), std::string::npos) << resumed.output;
     EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
 }
+
+// ---- Runs that cannot go on, and runs that must stop (issue: every input runs or stops in seconds) -----
+
+namespace {
+
+const fs::path kFreeFallCase = fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_block" / "case.yaml";
+
+// Runs chute in the background, sends it SIGTERM after each delay (s) in turn, and waits for it; a run still
+// alive 60 s after its start is killed (exit code 128 + 9; the watchdog ends with the run), so a hang fails the test
+// instead of hanging it. (Not under timeout(1): it forwards only the first of two signals.)
+CommandResult run_chute_signalled(const std::string& args, const fs::path& dir, const std::vector<double>& delays) {
+    const fs::path log = dir / "chute.log", code = dir / "exit_code";
+    std::string script =
+        std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1 & pid=$!; " +
+        "(for i in $(seq 600); do sleep 0.1; kill -0 $pid || exit 0; done; kill -KILL $pid) > /dev/null 2>&1 & ";
+    for (double d : delays) script += "sleep " + std::to_string(d) + "; kill -TERM $pid 2>/dev/null; ";
+    script += "wait $pid; echo $? > '" + code.string() + "'";
+    std::system(script.c_str());
+    return {std::stoi(read_text(code)), read_text(log)};
+}
+
+// The free-fall example with a step that never ends: 1000 m^2/s asks the k-epsilon transport for ~2e6
+// sub-steps per step, which a limit of 2e9 lets it try.
+std::string stuck_run(const fs::path& dir) {
+    return "run '" + kFreeFallCase.string() + "' --out '" + (dir / "out").string() +
+           "' --no-plots --set fluid.viscosity=1000 --set turbulence.max_substeps=2000000000";
+}
+
+}  // namespace
+
+// The free-fall example with fluid.viscosity 1000 (m^2/s: 1e9 times water's) used to hang in its first steps,
+// silent and deaf to SIGTERM. It is warned about before the run, then stops in its second step with exit
+// code 3, naming the sub-steps it would need and the key behind them; what was written is kept.
+TEST(Cli, ViscosityInTheWrongUnitsStopsInSecondsNamingTheKey) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_viscosity");
+    const auto r = run_chute("run '" + kFreeFallCase.string() + "' --out '" + (dir / "out").string() +
+                                 "' --no-plots --set fluid.viscosity=1000",
+                             dir, "timeout -s KILL 60 ");
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("warning: fluid.viscosity: 1000 m^2/s is 1e+09 times water's"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("the k-epsilon transport would need"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("turbulence.max_substeps = 1000"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("fluid.viscosity 1000 m^2/s is 1e+09 times water's"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("Outputs written so far are kept in"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.h5"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "body_block.csv"));
+    for (const auto& e : fs::directory_iterator(dir / "out")) EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
+
+// A stuck step and a user who presses Ctrl-C twice (or a batch system that signals twice): the second signal
+// ends the run at once with 128 + the first signal's number, without waiting for the step.
+TEST(Cli, SecondSignalExitsAtOnce) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_second_signal");
+    const auto r = run_chute_signalled(stuck_run(dir), dir, {3.0, 1.0});
+    EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.output;
+    EXPECT_NE(r.output.find("a second stop signal: exiting at once"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find((dir / "out").string()), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "fields_000000.h5")) << "what was written before stays";
+}
+
+// One signal to a stuck step: the run waits 5 s for the step to end, then exits at once.
+TEST(Cli, StepThatDoesNotEndAfterASignalExitsAfterTheGracePeriod) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_grace");
+    const auto r = run_chute_signalled(stuck_run(dir), dir, {3.0});
+    EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.output;
+    EXPECT_NE(r.output.find("the step did not end within 5 s of the stop signal"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "fields_000000.h5")) << "what was written before stays";
+}
