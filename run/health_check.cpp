@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "diagnostics.hpp"
+#include "implicit_diffusion.hpp"
 
 namespace chute {
 
@@ -35,12 +36,22 @@ std::optional<std::string> HealthCheck::problem(const Model& model, const StepSt
 }
 
 std::optional<std::string> HealthCheck::warning(const Model& model, const StepStats& step) {
-    if (warned_poisson_ || !poisson_at_bound(step)) return std::nullopt;
-    warned_poisson_ = true;
     std::ostringstream msg;
-    msg << "step " << model.flow().step() << ", t = " << model.flow().time() << ": " << poisson_bound_text(step)
-        << "; the run goes on while max |div u| dt stays below numerics.divergence_limit (noted once)";
-    return msg.str();
+    msg << "step " << model.flow().step() << ", t = " << model.flow().time() << ": ";
+    if (!warned_poisson_ && poisson_at_bound(step)) {
+        warned_poisson_ = true;
+        msg << poisson_bound_text(step)
+            << "; the run goes on while max |div u| dt stays below numerics.divergence_limit (noted once)";
+        return msg.str();
+    }
+    if (!warned_diffusion_ && step.diffusion_iterations >= ImplicitDiffusion::kMaxIterations) {
+        warned_diffusion_ = true;
+        msg << "the implicit diffusion solve stopped at its bound of " << ImplicitDiffusion::kMaxIterations
+            << " iterations; the step is still a damped update, but the eddy viscosity is likely far out of "
+               "scale (check turbulence.* and fluid.viscosity; noted once)";
+        return msg.str();
+    }
+    return std::nullopt;
 }
 
 std::string HealthCheck::poisson_bound_text(const StepStats& step) const {

@@ -28,8 +28,9 @@ public:
           poisson_tolerance_(config.poisson_tolerance) {}
     // Empty, or why the run must stop (collective: every rank gets the same answer).
     std::optional<std::string> problem(const Model& model, const StepStats& step, const FlowHealth& health);
-    // Empty, or (once per run) a note that the pressure solve stopped at its iteration bound: the run goes
-    // on, since the divergence check above judges whether the unconverged pressure matters.
+    // Empty, or (once per run and solve) a note that the pressure or the implicit diffusion solve stopped at
+    // its iteration bound: the run goes on, since the divergence check judges whether an unconverged
+    // pressure matters, and an unconverged diffusion solve is still a stable (damped) update.
     std::optional<std::string> warning(const Model& model, const StepStats& step);
 
 private:
@@ -41,7 +42,7 @@ private:
     int poisson_max_iterations_;
     double poisson_tolerance_;
     double first_dt_ = 0.0;
-    bool warned_poisson_ = false;
+    bool warned_poisson_ = false, warned_diffusion_ = false;
 };
 
 }  // namespace chute

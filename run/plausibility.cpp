@@ -100,8 +100,7 @@ bool explicit_diffusion(const CaseConfig& c) {
 
 void check_fluid(const CaseConfig& c, std::vector<std::string>& out) {
     if (c.viscosity > 1.0)
-        out.push_back("fluid.viscosity: " + number(c.viscosity) + " m^2/s is " +
-                      number(c.viscosity / kWaterViscosity) +
+        out.push_back("fluid.viscosity: " + number(c.viscosity) + " m^2/s is " + number(c.viscosity / kWaterViscosity) +
                       " times water's; it is the kinematic viscosity in m^2/s (water 1e-06, air 1.5e-05, glycerol "
                       "1e-03): check its units");
     if (c.density < 0.05 || c.density > 2.0e4)
@@ -125,8 +124,8 @@ void check_bodies(const CaseConfig& c, const Axis& x, const Axis& y, std::vector
         const double cell = std::max(cell_width_at(x, at.x()), cell_width_at(y, at.y()));
         const double width = narrowest_width(b);
         if (width < 2.0 * cell)
-            out.push_back(key + ": the body is " + number(width) + " m across, " + number(width / cell) +
-                          " cells of " + number(cell) +
+            out.push_back(key + ": the body is " + number(width) + " m across, " + number(width / cell) + " cells of " +
+                          number(cell) +
                           " m where it starts; the immersed boundary needs at least 2 (the study's block has "
                           "20): refine domain.x and domain.y there");
     }
@@ -154,9 +153,8 @@ void check_time_step(const CaseConfig& c, const Axis& x, const Axis& y, std::vec
     }
     const double steps = c.end_time / dt;
     if (dt < kShortestStep || steps > kMostSteps)
-        out.push_back("time.end: the time step would be about " + number(dt) + " s (" + limit + "), " +
-                      number(steps) + " steps to time.end " + number(c.end_time) +
-                      " s; check the units of the keys behind it");
+        out.push_back("time.end: the time step would be about " + number(dt) + " s (" + limit + "), " + number(steps) +
+                      " steps to time.end " + number(c.end_time) + " s; check the units of the keys behind it");
 }
 
 void check_gravity(const CaseConfig& c, std::vector<std::string>& out) {
@@ -167,8 +165,7 @@ void check_gravity(const CaseConfig& c, std::vector<std::string>& out) {
     if (c.gravity[1] > 0.0)
         out.push_back("gravity: [" + number(c.gravity[0]) + ", " + number(c.gravity[1]) +
                       "] m/s^2 points up (+y); the bed is usually below, gravity [0, -9.81]");
-    if (g > 100.0)
-        out.push_back("gravity: " + number(g) + " m/s^2 is more than 10 g (Earth 9.81): check its units");
+    if (g > 100.0) out.push_back("gravity: " + number(g) + " m/s^2 is more than 10 g (Earth 9.81): check its units");
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ void ImplicitDiffusion::create(Component& c, bool is_u) {
     HYPRE_StructVectorInitialize(c.x);
     HYPRE_StructPCGCreate(comm, &c.pcg);
     HYPRE_StructPCGSetTol(c.pcg, tolerance_);
-    HYPRE_StructPCGSetMaxIter(c.pcg, 500);
+    HYPRE_StructPCGSetMaxIter(c.pcg, kMaxIterations);
     HYPRE_StructPCGSetTwoNorm(c.pcg, 1);
     // Jacobi (diagonal) preconditioning: one PFMG V-cycle took as many PCG iterations (6.2 against 5.5 on the
     // free-fall case) and its set-up, redone every step as the values change, doubled the step's cost.

@@ -30,6 +30,10 @@ namespace chute {
 
 class ImplicitDiffusion {
 public:
+    // PCG's bound per component and step: the system is diagonally dominant (1 + dt nu Laplacian), so it
+    // converges in tens of iterations; reaching the bound is reported (run/health_check.hpp), not hidden.
+    static constexpr int kMaxIterations = 500;
+
     ImplicitDiffusion(const Grid& grid, const BoundaryConditions& bc, double tolerance = 1e-6);
     ~ImplicitDiffusion();
     ImplicitDiffusion(const ImplicitDiffusion&) = delete;

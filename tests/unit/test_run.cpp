@@ -377,3 +377,19 @@ TEST(Cli, StepThatDoesNotEndAfterASignalExitsAfterTheGracePeriod) {
     EXPECT_NE(r.output.find("the step did not end within 5 s of the stop signal"), std::string::npos) << r.output;
     EXPECT_TRUE(fs::exists(dir / "out" / "fields_000000.h5")) << "what was written before stays";
 }
+
+// A pressure solve cut short by numerics.poisson.max_iterations is reported once, naming the key; the run
+// goes on while the divergence stays within numerics.divergence_limit.
+TEST(Cli, PoissonSolveAtItsBoundIsReportedOnce) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_poisson_bound");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() +
+                                 "' --set numerics.poisson.max_iterations=1 --set numerics.divergence_limit=1",
+                             dir, "timeout -s KILL 60 ");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    const std::string note = "the pressure solve stopped at numerics.poisson.max_iterations = 1";
+    const std::size_t first = r.output.find(note);
+    ASSERT_NE(first, std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find(note, first + 1), std::string::npos) << "noted once\n" << r.output;
+}
