@@ -6,6 +6,7 @@
 #include <mpi.h>
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "case_file.hpp"
 #include "hdf5_file.hpp"
@@ -211,11 +213,13 @@ int main(int argc, char** argv) {
         if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
         code = 3;
     } catch (const chute::OutputError& e) {
-        // A result file could not be written (full disk, file size limit, unwritable folder); rank 0 writes
-        // them all, and the other ranks may be waiting in a collective call.
+        // A result file could not be written (full disk, file size limit, unwritable folder). Rank 0 writes
+        // them all and says so; other ranks may be waiting in a collective call, so the job is stopped, by
+        // rank 0 first, so that its message is not cut off.
         if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
         int size = 1;
         MPI_Comm_size(MPI_COMM_WORLD, &size);
+        if (size > 1 && rank != 0) std::this_thread::sleep_for(std::chrono::seconds(1));
         if (size > 1) MPI_Abort(MPI_COMM_WORLD, 4);
         code = 4;
     } catch (const std::exception& e) {

@@ -13,7 +13,7 @@ namespace chute {
 
 AppendFile::AppendFile(std::filesystem::path path) : path_(std::move(path)) {
     fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    struct stat st{};
+    struct stat st {};
     if (fd_ < 0 || ::fstat(fd_, &st) != 0) {
         const int error = errno;
         if (fd_ >= 0) ::close(fd_);

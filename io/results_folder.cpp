@@ -17,7 +17,7 @@ namespace {
 bool is_left_temporary(const std::string& name) {
     if (!name.ends_with(".tmp")) return false;
     const std::string target = name.substr(0, name.size() - 4);
-    for (const char* ext : {".h5", ".csv", ".xdmf", ".txt", ".yaml"})
+    for (const char* ext : {".h5", ".csv", ".xdmf", ".txt", ".yaml", ".png"})
         if (target.ends_with(ext)) return true;
     return false;
 }

@@ -5,9 +5,9 @@
 // binary (single rank only, see chute_process.hpp) and skip where the privilege they need is missing.
 #include <gtest/gtest.h>
 #include <mpi.h>
+#include <poll.h>
 #include <sys/inotify.h>
 #include <sys/resource.h>
-#include <poll.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -238,9 +238,8 @@ TEST(Faults, FullDiskStopsTheRunAndTheNewestCheckpointRestarts) {
 
         const auto newest = newest_readable_checkpoint(copy);
         ASSERT_TRUE(newest) << "no checkpoint survived";
-        const auto resumed = run_chute("run " + quoted(dir / "case.yaml") + " --out " + quoted(copy) +
-                                           " --restart " + quoted(copy),
-                                       dir);
+        const auto resumed = run_chute(
+            "run " + quoted(dir / "case.yaml") + " --out " + quoted(copy) + " --restart " + quoted(copy), dir);
         EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
         EXPECT_TRUE(contains(resumed.output, "continuing from " + newest->string())) << resumed.output;
         EXPECT_DOUBLE_EQ(last_time(copy / "timeseries.csv"), 1.0) << resumed.output;
@@ -265,9 +264,11 @@ TEST(Faults, FileSizeLimitStopsTheRunAndKeepsWholeLines) {
                              " --set output.checkpoints_kept=2";
     {
         ChuteProcess run(args, dir / "run.log");
-        while (!fs::exists(out / "case.yaml") && run.running()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        while (!fs::exists(out / "case.yaml") && run.running())
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
         const rlimit limit{40000, RLIM_INFINITY};
-        ASSERT_EQ(prlimit(run.pid(), RLIMIT_FSIZE, &limit, nullptr), 0) << "cannot set the limit: " << std::strerror(errno);
+        ASSERT_EQ(prlimit(run.pid(), RLIMIT_FSIZE, &limit, nullptr), 0)
+            << "cannot set the limit: " << std::strerror(errno);
         const int code = run.wait();
         const std::string log = read_text(dir / "run.log");
         std::printf("[ file size limit 40000 bytes ] exit %d: %s\n", code, line_with(log, "chute: cannot").c_str());
@@ -319,7 +320,8 @@ TEST(Faults, ReadOnlyResultsFolderStopsBeforeTheRun) {
     } else {
         const std::string unshare = private_mount_command(dir);
         if (unshare.empty()) GTEST_SKIP() << "root ignores permissions, and no read-only tmpfs can be mounted here";
-        write_text(dir / "in_namespace.sh", "mount -t tmpfs -o ro,size=64k tmpfs " + quoted(out) + " || exit 90\n" + run);
+        write_text(dir / "in_namespace.sh",
+                   "mount -t tmpfs -o ro,size=64k tmpfs " + quoted(out) + " || exit 90\n" + run);
         r = run_shell(unshare + " sh " + quoted(dir / "in_namespace.sh"), dir);
         cause = "Read-only file system";
     }
@@ -380,10 +382,11 @@ TEST(Faults, KilledWhileWritingACheckpointRestartsFromThePreviousOne) {
     const fs::path dir = scratch("faults_sigkill");
     // 64 x 64 cells (a checkpoint of 200 kB, written in a few hundred microseconds), a checkpoint every 2 steps.
     write_text(dir / "case.yaml", kCavity);
-    const std::string base = "run " + quoted(dir / "case.yaml") +
-                             " --set domain.x.cells=64 --set domain.y.cells=64 --set numerics.dt=0.002"
-                             " --set time.end=0.2 --set output.fields_interval=0.1 --set output.checkpoint_interval=0.004"
-                             " --set output.checkpoints_kept=3 --out ";
+    const std::string base =
+        "run " + quoted(dir / "case.yaml") +
+        " --set domain.x.cells=64 --set domain.y.cells=64 --set numerics.dt=0.002"
+        " --set time.end=0.2 --set output.fields_interval=0.1 --set output.checkpoint_interval=0.004"
+        " --set output.checkpoints_kept=3 --out ";
     const fs::path out = dir / "killed", straight = dir / "straight";
     fs::create_directories(out);
     const std::vector<KillMoment> moments = {{"temporary made", IN_CREATE, 0},
