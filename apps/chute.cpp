@@ -1,21 +1,26 @@
 // chute: the command-line tool.
-//   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT] [--no-plots]
+//   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT|DIR] [--no-plots]
 //             [--sweep key.path=v1,v2,... ...]   one run per combination, in DIR/<key>=<value>,...
 //   chute keys            prints every case-file key (the table of docs/case-file.md)
 #include <HYPRE_utilities.h>
 #include <mpi.h>
 #include <CLI/CLI.hpp>
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "case_file.hpp"
 #include "hdf5_file.hpp"
+#include "output_error.hpp"
 #include "plausibility.hpp"
+#include "restart_state.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
 
@@ -59,11 +64,7 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     if (no_plots) config.plots = false;
     chute::RunOptions options;
     options.out_dir = out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
-    if (!restart.empty()) {
-        if (!std::filesystem::exists(restart))
-            throw chute::CaseError("--restart: no checkpoint file '" + restart + "'");
-        options.restart = restart;
-    }
+    if (!restart.empty()) options.restart = chute::restart_checkpoint(restart, rank == 0);
     options.case_yaml = case_as_run(case_file, overrides);
     if (rank == 0)
         std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n", config.name.c_str(),
@@ -73,6 +74,7 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
             std::fprintf(stderr, "chute: warning: %s\n", w.c_str());
     std::fflush(stdout);  // the header is out before anything else happens, even when stdout is a file
     chute::install_stop_handlers(options.out_dir);
+    std::signal(SIGXFSZ, SIG_IGN);  // past `ulimit -f` a write then fails (EFBIG) and is reported, not killed
     const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
     if (rank == 0) {
         const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
@@ -187,7 +189,9 @@ int main(int argc, char** argv) {
     run->add_option("case", case_file, "case file (YAML)")->required();
     run->add_option("--out", out_dir, "results folder (default results/<case name>)");
     run->add_option("--set", overrides, "override a key: --set domain.x.cells=128 (repeatable)");
-    run->add_option("--restart", restart, "continue from this checkpoint file");
+    run->add_option(
+        "--restart", restart,
+        "continue from this checkpoint file, or from the newest readable checkpoint of this results folder");
     run->add_flag("--no-plots", no_plots, "do not make the PNG plots");
     std::vector<std::string> sweeps;
     run->add_option("--sweep", sweeps,
@@ -213,6 +217,16 @@ int main(int argc, char** argv) {
     } catch (const chute::RunFailure& e) {
         if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
         code = 3;
+    } catch (const chute::OutputError& e) {
+        // A result file could not be written (full disk, file size limit, unwritable folder). Rank 0 writes
+        // them all and says so; other ranks may be waiting in a collective call, so the job is stopped, by
+        // rank 0 first, so that its message is not cut off.
+        if (rank == 0) std::fprintf(stderr, "chute: %s\n", e.what());
+        int size = 1;
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+        if (size > 1 && rank != 0) std::this_thread::sleep_for(std::chrono::seconds(1));
+        if (size > 1) MPI_Abort(MPI_COMM_WORLD, 4);
+        code = 4;
     } catch (const std::exception& e) {
         // Errors other than the above may be raised on one rank only (rank 0's file I/O): the others may be
         // waiting in a collective call, so the whole job is stopped.

@@ -145,6 +145,33 @@ std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::pa
     return found.back().second;
 }
 
+void check_checkpoint_readable(const std::filesystem::path& path) {
+    (void)read_checkpoint_lines(path);  // the format mark and the grid lines
+    const Hdf5File file = Hdf5File::open_read(path);
+    for (const char* name : {"time", "dt", "dt_previous"}) (void)file.double_attribute("/", name);
+    (void)file.int_attribute("/", "step");
+    for (const char* group : {"fields", "arrays"}) {
+        if (!file.has(group)) continue;
+        for (const std::string& member : file.members(group)) (void)file.read(std::string(group) + "/" + member);
+    }
+    if (!file.has("fields") || file.members("fields").empty())
+        throw std::runtime_error("checkpoint '" + path.string() + "' holds no field");
+}
+
+std::optional<std::filesystem::path> newest_readable_checkpoint(const std::filesystem::path& out_dir,
+                                                                std::vector<std::string>* skipped) {
+    const auto found = list_checkpoints(out_dir);
+    for (auto it = found.rbegin(); it != found.rend(); ++it) {
+        try {
+            check_checkpoint_readable(it->second);
+            return it->second;
+        } catch (const std::runtime_error& e) {
+            if (skipped != nullptr) skipped->push_back(it->second.string() + ": " + e.what());
+        }
+    }
+    return std::nullopt;
+}
+
 void prune_checkpoints(const std::filesystem::path& out_dir, int keep) {
     int initialised = 0;
     MPI_Initialized(&initialised);

@@ -64,6 +64,15 @@ std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir, long
 // The checkpoint of out_dir with the highest step, if there is one.
 std::optional<std::filesystem::path> latest_checkpoint(const std::filesystem::path& out_dir);
 
+// Not collective: throws std::runtime_error naming the file and the reason unless `path` opens as a whole
+// Chute checkpoint: the format mark, the header, the grid lines, every field and array read back.
+void check_checkpoint_readable(const std::filesystem::path& path);
+
+// The checkpoint of out_dir with the highest step among those that pass check_checkpoint_readable(); each
+// one passed over is added to `skipped` (if given) as "<file>: <reason>".
+std::optional<std::filesystem::path> newest_readable_checkpoint(const std::filesystem::path& out_dir,
+                                                                std::vector<std::string>* skipped = nullptr);
+
 // Deletes all but the `keep` newest (highest step) checkpoint_<step>.h5 files of out_dir; keep <= 0 keeps
 // all. Safe to call on every rank: only rank 0 of MPI_COMM_WORLD deletes.
 void prune_checkpoints(const std::filesystem::path& out_dir, int keep);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "exact_text.hpp"
@@ -124,42 +124,38 @@ void FieldOutput::write(long step, double time, const std::vector<NamedField>& f
 }
 
 void FieldOutput::write_xdmf() const {
-    write_atomically(xdmf_path(), [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
-        if (!out) throw std::runtime_error("cannot create '" + tmp.string() + "'");
-        out << "<?xml version=\"1.0\" ?>\n"
-            << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-            << "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
-            << "  <Domain>\n"
-            << "    <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-        for (const Snapshot& s : snapshots_) {
-            const std::string file = xml_escape(s.file);
-            const std::string points = std::to_string(s.ny + 1) + " " + std::to_string(s.nx + 1);
-            const std::string cells = std::to_string(s.ny) + " " + std::to_string(s.nx);
-            out << "      <Grid Name=\"step " << s.step << "\" GridType=\"Uniform\">\n"
-                << "        <Time Value=\"" << exact_text(s.time) << "\"/>\n"
-                << "        <Topology TopologyType=\"2DRectMesh\" Dimensions=\"" << points << "\"/>\n"
-                << "        <Geometry GeometryType=\"VXVY\">\n"
-                << "          <DataItem Dimensions=\"" << s.nx + 1
-                << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/x</DataItem>\n"
-                << "          <DataItem Dimensions=\"" << s.ny + 1
-                << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/y</DataItem>\n"
-                << "        </Geometry>\n";
-            for (const std::string& name : s.names) {
-                const std::string n = xml_escape(name);
-                out << "        <Attribute Name=\"" << n << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-                    << "          <DataItem Dimensions=\"" << cells
-                    << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/" << n << "</DataItem>\n"
-                    << "        </Attribute>\n";
-            }
-            out << "      </Grid>\n";
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\" ?>\n"
+        << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+        << "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
+        << "  <Domain>\n"
+        << "    <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const Snapshot& s : snapshots_) {
+        const std::string file = xml_escape(s.file);
+        const std::string points = std::to_string(s.ny + 1) + " " + std::to_string(s.nx + 1);
+        const std::string cells = std::to_string(s.ny) + " " + std::to_string(s.nx);
+        out << "      <Grid Name=\"step " << s.step << "\" GridType=\"Uniform\">\n"
+            << "        <Time Value=\"" << exact_text(s.time) << "\"/>\n"
+            << "        <Topology TopologyType=\"2DRectMesh\" Dimensions=\"" << points << "\"/>\n"
+            << "        <Geometry GeometryType=\"VXVY\">\n"
+            << "          <DataItem Dimensions=\"" << s.nx + 1
+            << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/x</DataItem>\n"
+            << "          <DataItem Dimensions=\"" << s.ny + 1
+            << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/y</DataItem>\n"
+            << "        </Geometry>\n";
+        for (const std::string& name : s.names) {
+            const std::string n = xml_escape(name);
+            out << "        <Attribute Name=\"" << n << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+                << "          <DataItem Dimensions=\"" << cells
+                << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file << ":/" << n << "</DataItem>\n"
+                << "        </Attribute>\n";
         }
-        out << "    </Grid>\n"
-            << "  </Domain>\n"
-            << "</Xdmf>\n";
-        out.close();
-        if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "'");
-    });
+        out << "      </Grid>\n";
+    }
+    out << "    </Grid>\n"
+        << "  </Domain>\n"
+        << "</Xdmf>\n";
+    write_text_atomically(xdmf_path(), out.str());
 }
 
 }  // namespace chute

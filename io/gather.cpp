@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "output_error.hpp"
+
 namespace chute {
 
 namespace {
@@ -93,8 +95,10 @@ void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D
 
 namespace {
 
-// Every rank says whether it failed; if any did, the lowest failing rank's message is sent to all.
-void agree(MPI_Comm comm, const std::string& error, bool failed) {
+// Every rank says whether it failed; if any did, the lowest failing rank's message is sent to all, and its
+// kind: an OutputError (a result file that could not be written) stays one on every rank, so that every rank
+// stops with the same exit code.
+void agree(MPI_Comm comm, const std::string& error, bool failed, bool output_error) {
     int rank = 0, size = 1;
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &size);
@@ -102,19 +106,23 @@ void agree(MPI_Comm comm, const std::string& error, bool failed) {
     int first = size;
     MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
     if (first == size) return;
-    int length = rank == first ? static_cast<int>(error.size()) : 0;
-    MPI_Bcast(&length, 1, MPI_INT, first, comm);
-    std::string message = rank == first ? error : std::string(static_cast<std::size_t>(length), '\0');
-    MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
+    int header[2] = {rank == first ? static_cast<int>(error.size()) : 0, output_error ? 1 : 0};
+    MPI_Bcast(header, 2, MPI_INT, first, comm);
+    std::string message = rank == first ? error : std::string(static_cast<std::size_t>(header[0]), '\0');
+    MPI_Bcast(message.data(), header[0], MPI_CHAR, first, comm);
+    if (header[1] != 0) throw OutputError(message);
     throw std::runtime_error(message);
 }
 
 void run_and_agree(MPI_Comm comm, const std::function<void()>& work, bool run_here) {
     std::string error;
-    bool failed = false;
+    bool failed = false, output_error = false;
     if (run_here) {
         try {
             work();
+        } catch (const OutputError& e) {
+            error = e.what();
+            failed = output_error = true;
         } catch (const std::exception& e) {
             error = e.what();
             failed = true;
@@ -123,7 +131,7 @@ void run_and_agree(MPI_Comm comm, const std::function<void()>& work, bool run_he
             failed = true;
         }
     }
-    agree(comm, error, failed);
+    agree(comm, error, failed, output_error);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ void scatter_global(const Grid& grid, const std::vector<double>& global, Field2D
 
 // Error agreement for collective I/O, so that no rank is left waiting in a collective call when another
 // has thrown. Both are collective over `comm`; if `work` throws anywhere, every rank throws a
-// std::runtime_error carrying the message of the lowest failing rank.
+// std::runtime_error carrying the message of the lowest failing rank (an OutputError if that was one).
 // run_on_root: `work` runs on rank 0 only (the rank that writes after a gather).
 void run_on_root(MPI_Comm comm, const std::function<void()>& work);
 // run_on_all: `work` runs on every rank (each reads its own part).

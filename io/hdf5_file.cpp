@@ -3,9 +3,11 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <cerrno>
 #include <stdexcept>
 #include <utility>
+
+#include "output_error.hpp"
 
 namespace chute {
 
@@ -44,20 +46,52 @@ private:
     herr_t (*closer_)(hid_t);
 };
 
-// The most specific message on HDF5's error stack, or "" if there is none.
+// The most specific message on HDF5's error stack, or "" if there is none. Where a system call failed (a full
+// disk, a file size limit, a read-only folder), HDF5's file driver puts the system's own message in the
+// description ("..., errno = 28, error message = 'No space left on device', ..."): that one is returned.
 std::string hdf5_reason() {
-    std::string reason;
+    struct Found {
+        std::string innermost, system;
+    } found;
     H5Ewalk2(
         H5E_DEFAULT, H5E_WALK_UPWARD,
         [](unsigned n, const H5E_error2_t* err, void* client) -> herr_t {
-            if (n == 0 && err != nullptr && err->desc != nullptr) *static_cast<std::string*>(client) = err->desc;
+            if (err == nullptr || err->desc == nullptr) return 0;
+            auto& f = *static_cast<Found*>(client);
+            const std::string desc = err->desc;
+            if (n == 0) f.innermost = desc;
+            const std::string key = "error message = '";
+            const std::size_t at = desc.find(key);
+            if (f.system.empty() && at != std::string::npos) {
+                const std::size_t end = desc.find('\'', at + key.size());
+                f.system = desc.substr(at + key.size(), end == std::string::npos ? end : end - at - key.size());
+            }
             return 0;
         },
-        &reason);
-    return reason;
+        &found);
+    return found.system.empty() ? found.innermost : found.system;
 }
 
 std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+// Creates (truncating) `path` holding `size` bytes; throws the system's reason (write_atomically names the
+// file). close() is checked too: some file systems (NFS) report a full disk only there.
+void write_bytes(const std::filesystem::path& path, const char* data, std::size_t size) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error(errno_text(errno) + " (creating '" + path.filename().string() + "')");
+    std::size_t done = 0;
+    while (done < size) {
+        const ssize_t n = ::write(fd, data + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;  // a write of 0 bytes: nothing more fits
+            ::close(fd);
+            throw std::runtime_error(errno_text(error));
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0) throw std::runtime_error(errno_text(errno) + " (closing '" + path.filename().string() + "')");
+}
 
 void check_dims(const std::string& where, std::size_t expected, std::size_t got) {
     if (expected != got)
@@ -69,12 +103,18 @@ void check_dims(const std::string& where, std::size_t expected, std::size_t got)
 
 Hdf5File Hdf5File::create(const std::filesystem::path& path) {
     QuietErrors quiet;
-    const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    // HDF5's core driver without a backing store: the file is built in memory and written by close().
+    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    if (!access.ok() || H5Pset_fapl_core(access.get(), std::size_t{1} << 20, 0) < 0)
+        throw std::runtime_error("HDF5: cannot set up the in-memory file for " + quoted(path));
+    const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
     if (id < 0) {
         const std::string reason = hdf5_reason();
         throw std::runtime_error("HDF5: cannot create file " + quoted(path) + (reason.empty() ? "" : ": " + reason));
     }
-    return Hdf5File(id, path);
+    Hdf5File file(id, path);
+    file.in_memory_ = true;
+    return file;
 }
 
 Hdf5File Hdf5File::open_read(const std::filesystem::path& path) {
@@ -92,7 +132,7 @@ Hdf5File Hdf5File::open_read(const std::filesystem::path& path) {
 }
 
 Hdf5File::Hdf5File(Hdf5File&& other) noexcept
-    : id_(std::exchange(other.id_, H5I_INVALID_HID)), path_(std::move(other.path_)) {}
+    : id_(std::exchange(other.id_, H5I_INVALID_HID)), in_memory_(other.in_memory_), path_(std::move(other.path_)) {}
 
 Hdf5File& Hdf5File::operator=(Hdf5File&& other) noexcept {
     if (this != &other) {
@@ -101,6 +141,7 @@ Hdf5File& Hdf5File::operator=(Hdf5File&& other) noexcept {
             H5Fclose(id_);
         }
         id_ = std::exchange(other.id_, H5I_INVALID_HID);
+        in_memory_ = other.in_memory_;
         path_ = std::move(other.path_);
     }
     return *this;
@@ -116,8 +157,20 @@ Hdf5File::~Hdf5File() {
 void Hdf5File::close() {
     if (id_ < 0) return;
     QuietErrors quiet;
+    std::vector<char> image;
+    if (in_memory_) {
+        const ssize_t size = H5Fflush(id_, H5F_SCOPE_GLOBAL) < 0 ? -1 : H5Fget_file_image(id_, nullptr, 0);
+        if (size >= 0) image.resize(static_cast<std::size_t>(size));
+        if (size < 0 || H5Fget_file_image(id_, image.data(), image.size()) != size) {
+            const std::string reason = hdf5_reason();
+            H5Fclose(std::exchange(id_, H5I_INVALID_HID));
+            throw std::runtime_error("HDF5 file " + quoted(path_) + ": cannot make the file's image" +
+                                     (reason.empty() ? "" : " (" + reason + ")"));
+        }
+    }
     const hid_t id = std::exchange(id_, H5I_INVALID_HID);
     if (H5Fclose(id) < 0) fail("cannot close (flush) the file");
+    if (in_memory_) write_bytes(path_, image.data(), image.size());
 }
 
 void Hdf5File::fail(const std::string& what) const {
@@ -364,14 +417,17 @@ std::string Hdf5File::string_attribute(const std::string& object, const std::str
 }
 
 namespace {
-// Flushes a file's (or directory's) contents to disk, so a renamed file survives a system crash too.
-bool sync_path(const std::filesystem::path& p, bool directory) {
-    const int fd = ::open(p.c_str(), O_RDONLY | (directory ? O_DIRECTORY : 0));
-    if (fd < 0) return false;
-    const bool ok = ::fsync(fd) == 0;
+
+// Flushes a file's (or directory's) contents to disk, so a renamed file survives a system crash too; the
+// errno of the failure, or 0.
+int sync_path(const std::filesystem::path& p, bool directory) {
+    const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC | (directory ? O_DIRECTORY : 0));
+    if (fd < 0) return errno;
+    const int error = ::fsync(fd) == 0 ? 0 : errno;
     ::close(fd);
-    return ok;
+    return error;
 }
+
 }  // namespace
 
 void write_atomically(const std::filesystem::path& target,
@@ -381,8 +437,17 @@ void write_atomically(const std::filesystem::path& target,
     std::error_code ec;
     try {
         write(tmp);
-        if (!sync_path(tmp, false)) throw std::runtime_error("cannot sync " + quoted(tmp) + " to disk");
+        if (const int error = sync_path(tmp, false))
+            throw std::runtime_error("cannot sync " + quoted(tmp) + " to disk: " + errno_text(error));
         std::filesystem::rename(tmp, target);
+    } catch (const OutputError&) {
+        std::filesystem::remove(tmp, ec);
+        throw;
+    } catch (const std::runtime_error& e) {
+        // Any failure to write is an output error (a full disk, a file size limit, a read-only folder), named
+        // by the file that was being written; a logic error in the caller stays what it is.
+        std::filesystem::remove(tmp, ec);
+        throw OutputError(target, e.what());
     } catch (...) {
         std::filesystem::remove(tmp, ec);
         throw;
@@ -392,12 +457,7 @@ void write_atomically(const std::filesystem::path& target,
 }
 
 void write_text_atomically(const std::filesystem::path& target, const std::string& text) {
-    write_atomically(target, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
-        out << text;
-        out.close();
-        if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    });
+    write_atomically(target, [&](const std::filesystem::path& tmp) { write_bytes(tmp, text.data(), text.size()); });
 }
 
 }  // namespace chute

@@ -18,7 +18,9 @@ namespace chute {
 
 class Hdf5File {
 public:
-    // Creates (truncating) a file for writing.
+    // Creates (truncating) a file for writing. It is built in memory and written to disk whole by close(), with
+    // plain POSIX writes whose failures (a full disk, a file size limit) are reported: HDF5 1.10 left a file
+    // whose flush failed half-closed and crashed at exit. It costs the file's size in memory once.
     static Hdf5File create(const std::filesystem::path& path);
     // Opens an existing file read-only; throws "no such file" if it is missing.
     static Hdf5File open_read(const std::filesystem::path& path);
@@ -27,9 +29,10 @@ public:
     Hdf5File& operator=(Hdf5File&& other) noexcept;
     Hdf5File(const Hdf5File&) = delete;
     Hdf5File& operator=(const Hdf5File&) = delete;
-    ~Hdf5File();  // closes quietly; call close() to see a failure to flush
+    ~Hdf5File();  // closes quietly; a created file is not written without close()
 
-    // Flushes and closes; throws if HDF5 reports a failure. Further calls are no-ops.
+    // Closes; a created file is written to disk here. Throws naming the file and the reason (the system's
+    // message for a failed write) if anything fails. Further calls are no-ops.
     void close();
     const std::filesystem::path& path() const { return path_; }
 
@@ -69,11 +72,14 @@ private:
     void read_attribute(const std::string& object, const std::string& name, hid_t mem_type, void* value) const;
 
     hid_t id_ = H5I_INVALID_HID;
+    bool in_memory_ = false;  // created: the image goes to disk at close()
     std::filesystem::path path_;
 };
 
 // Writes `target` atomically: `write` fills `target` + ".tmp", which is then synced to disk and renamed
-// over `target`. If `write` throws, the temporary is removed and `target` (an older good file) is untouched.
+// over `target`. If anything fails, the temporary is removed and `target` (an older good file) is untouched;
+// a std::runtime_error from `write`, the sync or the rename comes out as an OutputError (output_error.hpp)
+// naming `target` and the cause (the system's message, e.g. "No space left on device (ENOSPC)").
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 // The same for a text file.

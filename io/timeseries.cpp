@@ -2,9 +2,11 @@
 
 #include <charconv>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "append_file.hpp"
 #include "exact_text.hpp"
 #include "hdf5_file.hpp"
 
@@ -86,15 +88,10 @@ TimeSeries::TimeSeries(const Grid& grid, std::filesystem::path out_dir, std::vec
         }
     }
 
-    write_atomically(csv, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << header << '\n';
-        for (const std::string& line : kept_lines) out << line << '\n';
-        out.close();
-        if (!out) throw std::runtime_error("cannot write time series '" + tmp.string() + "'");
-    });
-    csv_.open(csv, std::ios::binary | std::ios::app);
-    if (!csv_) throw std::runtime_error("cannot open time series '" + csv.string() + "' for appending");
+    std::string text = header + '\n';
+    for (const std::string& line : kept_lines) text += line + '\n';
+    write_text_atomically(csv, text);
+    csv_ = AppendFile(csv);
 }
 
 void TimeSeries::append(const std::vector<double>& row) {
@@ -108,9 +105,7 @@ void TimeSeries::append(const std::vector<double>& row) {
         line += exact_text(row[k]);
     }
     line += '\n';
-    csv_ << line;
-    csv_.flush();
-    if (!csv_) throw std::runtime_error("cannot append to time series '" + csv_path().string() + "'");
+    csv_.append(line);
     rows_.push_back(row);
 }
 

@@ -8,10 +8,10 @@
 //
 // Rank 0 does all I/O; on other ranks every call is a no-op. Not collective: a failure throws on rank 0 only.
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "append_file.hpp"
 #include "grid.hpp"
 
 namespace chute {
@@ -27,7 +27,8 @@ public:
     TimeSeries(const Grid& grid, std::filesystem::path out_dir, std::vector<std::string> columns,
                double restart_time = -1.0, std::string stem = "timeseries");
 
-    // One CSV line, flushed. row.size() must equal the number of columns.
+    // One CSV line, handed to the system at once. row.size() must equal the number of columns. A failed
+    // write (full disk) throws OutputError and leaves the file at its last whole line (append_file.hpp).
     void append(const std::vector<double>& row);
 
     // Rewrites out_dir/timeseries.h5 atomically with every row so far, kept rows from before a restart
@@ -45,7 +46,7 @@ private:
     std::string stem_;
     std::vector<std::string> columns_;
     std::vector<std::vector<double>> rows_;
-    std::ofstream csv_;
+    AppendFile csv_;
 };
 
 }  // namespace chute

@@ -20,6 +20,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
+def save(fig, path):
+    """Writes a PNG atomically, as the solver writes its files: to path.tmp, then renamed, so that a full disk
+    leaves no cut image under the final name."""
+    tmp = path + ".tmp"
+    try:
+        fig.savefig(tmp, dpi=110, format="png")
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
+
+
 def load_timeseries(run_dir, stem="timeseries"):
     path = os.path.join(run_dir, stem + ".h5")
     with h5py.File(path, "r") as f:
@@ -47,7 +60,7 @@ def plot_timeseries(run_dir, ts):
         ax[3].legend(fontsize=7)
     ax[-1].set_xlabel("t (s)")
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, "timeseries.png"), dpi=110)
+    save(fig, os.path.join(run_dir, "timeseries.png"))
     plt.close(fig)
 
 
@@ -85,7 +98,7 @@ def plot_fields(run_dir):
         a.set_xlabel("x (m)")
         a.set_ylabel("y (m)")
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, "fields.png"), dpi=110)
+    save(fig, os.path.join(run_dir, "fields.png"))
     plt.close(fig)
 
 
@@ -126,7 +139,7 @@ def plot_body(run_dir, name, b, fields_file):
     ax[-1].set_xlabel("t (s)")
     fig.suptitle(f"body {name}")
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, f"body_{name}.png"), dpi=110)
+    save(fig, os.path.join(run_dir, f"body_{name}.png"))
     plt.close(fig)
     if not fields_file:
         return
@@ -147,7 +160,7 @@ def plot_body(run_dir, name, b, fields_file):
     a.set_xlabel("x (m)")
     a.set_ylabel("y (m)")
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, f"vorticity_{name}.png"), dpi=110)
+    save(fig, os.path.join(run_dir, f"vorticity_{name}.png"))
     plt.close(fig)
 
 
@@ -184,7 +197,7 @@ def plot_trajectory(run_dir, name, b):
     ax[-1].set_xlabel("t (s)")
     fig.suptitle(f"free body {name}")
     fig.tight_layout()
-    fig.savefig(os.path.join(run_dir, f"trajectory_{name}.png"), dpi=110)
+    save(fig, os.path.join(run_dir, f"trajectory_{name}.png"))
     plt.close(fig)
 
 

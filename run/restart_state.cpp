@@ -1,8 +1,10 @@
 #include "restart_state.hpp"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "case_file.hpp"
 #include "checkpoint.hpp"
 
 namespace chute {
@@ -33,6 +35,22 @@ std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::
                      checkpoint_fields(model), model.free_bodies().checkpoint_arrays());
     prune_checkpoints(out_dir, kept);
     return path;
+}
+
+std::filesystem::path restart_checkpoint(const std::filesystem::path& given, bool report) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(given, ec)) {
+        if (!std::filesystem::exists(given, ec))
+            throw CaseError("--restart: no checkpoint file '" + given.string() + "'");
+        return given;
+    }
+    std::vector<std::string> skipped;
+    const auto newest = newest_readable_checkpoint(given, &skipped);
+    if (report)
+        for (const std::string& note : skipped) std::printf("chute: --restart: passing over %s\n", note.c_str());
+    if (!newest) throw CaseError("--restart: no readable checkpoint in the folder '" + given.string() + "'");
+    if (report) std::printf("chute: --restart: continuing from %s\n", newest->string().c_str());
+    return *newest;
 }
 
 void restore_run(Model& model, const std::filesystem::path& checkpoint) {

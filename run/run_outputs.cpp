@@ -3,13 +3,16 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "checkpoint.hpp"
 #include "gather.hpp"
 #include "hdf5_file.hpp"
 #include "lumped_comparison.hpp"
+#include "output_error.hpp"
 #include "restart_state.hpp"
+#include "results_folder.hpp"
 
 namespace chute {
 
@@ -34,12 +37,19 @@ bool is_root(MPI_Comm comm) {
     return rank == 0;
 }
 
-// Collective: rank 0 makes the folder and writes the case as run, before anything else is written there.
+// Collective: rank 0 makes the folder, checks that it takes files (every rank throws OutputError if not:
+// nothing is written and no step taken) and writes the case as run, before anything else is written there.
 std::filesystem::path prepare(const RunOptions& options, MPI_Comm comm) {
-    if (is_root(comm)) std::filesystem::create_directories(options.out_dir);
-    MPI_Barrier(comm);
-    if (is_root(comm) && !options.case_yaml.empty())
-        write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
+    run_on_root(comm, [&] {
+        const std::vector<std::string> removed = prepare_results_folder(options.out_dir);
+        if (!removed.empty() && !options.quiet) {
+            std::printf("chute: removed %zu partial file(s) left in %s by an interrupted run:", removed.size(),
+                        options.out_dir.string().c_str());
+            for (const std::string& name : removed) std::printf(" %s", name.c_str());
+            std::printf("\n");
+        }
+        if (!options.case_yaml.empty()) write_text_atomically(options.out_dir / "case.yaml", options.case_yaml);
+    });
     return options.out_dir;
 }
 
@@ -66,7 +76,40 @@ RunOutputs::RunOutputs(Model& model, const RunOptions& options)
       next_field_time_(next_time(model.flow().time(), model.config().field_interval)),
       next_checkpoint_time_(next_time(model.flow().time(), model.config().checkpoint_interval)) {}
 
+template <class Work>
+void RunOutputs::writing(Work&& work) {
+    try {
+        work();
+    } catch (const OutputError& e) {
+        const std::filesystem::path newest =
+            !last_checkpoint_.empty() ? last_checkpoint_ : options_.restart.value_or(std::filesystem::path());
+        throw OutputError(std::string(e.what()) + "\n  Every file written before is complete (results folder '" +
+                          options_.out_dir.string() + "'). " +
+                          (newest.empty() ? "No checkpoint was written yet."
+                                          : "The newest checkpoint is '" + newest.string() +
+                                                "': with room to write, continue with --restart '" +
+                                                options_.out_dir.string() + "' (its newest readable checkpoint)."));
+    }
+}
+
 void RunOutputs::start(const FlowHealth& health, const std::vector<BodyForces>& forces) {
+    writing([&] { start_outputs(health, forces); });
+}
+
+void RunOutputs::after_step(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
+    writing([&] { write_due(step, health, forces); });
+}
+
+std::filesystem::path RunOutputs::finish(bool stepped) {
+    writing([&] { write_final(stepped); });
+    return last_checkpoint_;
+}
+
+void RunOutputs::flush() {
+    writing([&] { write_series_hdf5(); });
+}
+
+void RunOutputs::start_outputs(const FlowHealth& health, const std::vector<BodyForces>& forces) {
     if (options_.restart) return;
     if (is_root(model_.flow().grid().comm()) && !model_.free_bodies().empty())
         write_lumped_comparison(model_.config(), model_.bodies(), model_.free_bodies(), options_.out_dir);
@@ -74,7 +117,7 @@ void RunOutputs::start(const FlowHealth& health, const std::vector<BodyForces>& 
     record(StepStats{}, health, forces);
 }
 
-void RunOutputs::after_step(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
+void RunOutputs::write_due(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces) {
     const FlowSolver& flow = model_.flow();
     const CaseConfig& config = model_.config();
     const auto& events = model_.free_bodies().events();
@@ -90,19 +133,18 @@ void RunOutputs::after_step(const StepStats& step, const FlowHealth& health, con
     }
     if (flow.time() >= next_checkpoint_time_ - eps) {
         write_checkpoint();
-        flush();
+        write_series_hdf5();
         while (next_checkpoint_time_ <= flow.time() + eps) next_checkpoint_time_ += config.checkpoint_interval;
     }
 }
 
-std::filesystem::path RunOutputs::finish(bool stepped) {
+void RunOutputs::write_final(bool stepped) {
     if (stepped || !options_.restart) write_fields();
     write_checkpoint();
-    flush();
-    return last_checkpoint_;
+    write_series_hdf5();
 }
 
-void RunOutputs::flush() {
+void RunOutputs::write_series_hdf5() {
     series_.write_hdf5();
     body_series_.write_hdf5();
 }

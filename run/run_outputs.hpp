@@ -6,7 +6,9 @@
 //   every output.field_interval      fields_<step>.h5 + fields.xdmf (u, v, p in Pa, vorticity, k, eps, nu_t)
 //   every output.checkpoint_interval a checkpoint, and the series' HDF5 copies
 //   at the start                     case.yaml as run, lumped_<body>.csv (the lumped models of the release)
-// After a restart the series continue from the checkpoint's time. Every file is written atomically.
+// After a restart the series continue from the checkpoint's time. Every file is written atomically. A file
+// that cannot be written (full disk, file size limit, unwritable folder) stops the run with an OutputError
+// naming it, the results folder and the newest checkpoint to continue from.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -26,7 +28,8 @@ namespace chute {
 
 class RunOutputs {
 public:
-    // Collective. Creates the output folder; after a restart (options.restart) continues the series.
+    // Collective. Creates the output folder and checks it takes files (OutputError naming it if not, before
+    // anything is written); after a restart (options.restart) continues the series.
     RunOutputs(Model& model, const RunOptions& options);
 
     // A fresh run's first record and fields (t = 0), and the lumped comparison.
@@ -43,6 +46,13 @@ public:
     std::string trajectories() const { return trajectories_.text(); }
 
 private:
+    // Runs `work`, adding to an OutputError where the run can continue from.
+    template <class Work>
+    void writing(Work&& work);
+    void start_outputs(const FlowHealth& health, const std::vector<BodyForces>& forces);
+    void write_due(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces);
+    void write_final(bool stepped);
+    void write_series_hdf5();
     void record(const StepStats& step, const FlowHealth& health, const std::vector<BodyForces>& forces);
     void write_fields();
     void write_checkpoint();
