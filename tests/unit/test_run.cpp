@@ -159,6 +159,24 @@ CommandResult run_chute(const std::string& args, const fs::path& dir, const std:
     return {WEXITSTATUS(status), read_text(log)};
 }
 
+// Runs chute in the background and, once `started` exists (the run's first output: set-up is over, however
+// loaded the machine), sends it `signal` after each delay (s) in turn, then waits for it. A run still alive
+// 60 s after its start is killed (exit code 128 + 9; the watchdog ends with the run), so a hang fails the
+// test instead of hanging it. (Not under timeout(1): it forwards only the first of two signals.)
+CommandResult run_chute_signalled(const std::string& args, const fs::path& dir, const fs::path& started,
+                                  const std::vector<double>& delays, int signal = SIGTERM) {
+    const fs::path log = dir / "chute.log", code = dir / "exit_code";
+    std::string script = std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1 & pid=$!; " +
+                         "(for i in $(seq 600); do sleep 0.1; kill -0 $pid || exit 0; done; kill -KILL $pid) " +
+                         "> /dev/null 2>&1 & " + "while [ ! -e '" + started.string() +
+                         "' ] && kill -0 $pid 2>/dev/null; do sleep 0.1; done; ";
+    for (double d : delays)
+        script += "sleep " + std::to_string(d) + "; kill -" + std::to_string(signal) + " $pid 2>/dev/null; ";
+    script += "wait $pid; echo $? > '" + code.string() + "'";
+    std::system(script.c_str());
+    return {std::stoi(read_text(code)), read_text(log)};
+}
+
 void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 bool single_rank() {
@@ -294,9 +312,9 @@ TEST(Cli, SignalStopsWithACheckpointToContinueFrom) {
     const fs::path dir = scratch("cli_signal");
     write_text(dir / "case.yaml", kSmallCavity);
     const std::string c = "run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() + "'";
-    // 64^2 to t = 1000 takes minutes: a signal after 3 s always arrives mid-run.
+    // 64^2 to t = 1000 takes minutes: a signal 1 s after the first fields always arrives mid-run.
     const std::string grid = " --set domain.x.cells=64 --set domain.y.cells=64 --set time.end=1000";
-    const auto r = run_chute(c + grid, dir, "timeout --preserve-status -s INT 3 ");
+    const auto r = run_chute_signalled(c + grid, dir, dir / "out" / "fields_000000.h5", {1.0}, SIGINT);
     EXPECT_EQ(r.exit_code, 128 + SIGINT) << r.output;
     EXPECT_NE(r.output.find("continue with"), std::string::npos) << r.output;
     const auto checkpoint = latest_checkpoint(dir / "out");
@@ -311,20 +329,6 @@ TEST(Cli, SignalStopsWithACheckpointToContinueFrom) {
 namespace {
 
 const fs::path kFreeFallCase = fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_block" / "case.yaml";
-
-// Runs chute in the background, sends it SIGTERM after each delay (s) in turn, and waits for it; a run still
-// alive 60 s after its start is killed (exit code 128 + 9; the watchdog ends with the run), so a hang fails the test
-// instead of hanging it. (Not under timeout(1): it forwards only the first of two signals.)
-CommandResult run_chute_signalled(const std::string& args, const fs::path& dir, const std::vector<double>& delays) {
-    const fs::path log = dir / "chute.log", code = dir / "exit_code";
-    std::string script =
-        std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1 & pid=$!; " +
-        "(for i in $(seq 600); do sleep 0.1; kill -0 $pid || exit 0; done; kill -KILL $pid) > /dev/null 2>&1 & ";
-    for (double d : delays) script += "sleep " + std::to_string(d) + "; kill -TERM $pid 2>/dev/null; ";
-    script += "wait $pid; echo $? > '" + code.string() + "'";
-    std::system(script.c_str());
-    return {std::stoi(read_text(code)), read_text(log)};
-}
 
 // The free-fall example with a step that never ends: 1000 m^2/s asks the k-epsilon transport for ~2e6
 // sub-steps per step, which a limit of 2e9 lets it try.
@@ -361,7 +365,7 @@ TEST(Cli, ViscosityInTheWrongUnitsStopsInSecondsNamingTheKey) {
 TEST(Cli, SecondSignalExitsAtOnce) {
     if (!single_rank()) GTEST_SKIP() << "starts its own process";
     const fs::path dir = scratch("cli_second_signal");
-    const auto r = run_chute_signalled(stuck_run(dir), dir, {3.0, 1.0});
+    const auto r = run_chute_signalled(stuck_run(dir), dir, dir / "out" / "fields_000000.h5", {1.0, 1.0});
     EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.output;
     EXPECT_NE(r.output.find("a second stop signal: exiting at once"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find((dir / "out").string()), std::string::npos) << r.output;
@@ -372,7 +376,7 @@ TEST(Cli, SecondSignalExitsAtOnce) {
 TEST(Cli, StepThatDoesNotEndAfterASignalExitsAfterTheGracePeriod) {
     if (!single_rank()) GTEST_SKIP() << "starts its own process";
     const fs::path dir = scratch("cli_grace");
-    const auto r = run_chute_signalled(stuck_run(dir), dir, {3.0});
+    const auto r = run_chute_signalled(stuck_run(dir), dir, dir / "out" / "fields_000000.h5", {1.0});
     EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.output;
     EXPECT_NE(r.output.find("the step did not end within 5 s of the stop signal"), std::string::npos) << r.output;
     EXPECT_TRUE(fs::exists(dir / "out" / "fields_000000.h5")) << "what was written before stays";
