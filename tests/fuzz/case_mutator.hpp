@@ -50,10 +50,14 @@ public:
         if (values.empty()) return text;
         const Span s = values[pick(values.size())];
         const std::string old = text.substr(s.at, s.size);
-        const std::string now = coin(2) ? rescaled(old) : pick_of(kValidExtremes);
+        const std::string now = replacement(old);
         note("value '" + old + "' -> '" + now + "'");
         return text.substr(0, s.at) + now + text.substr(s.at + s.size);
     }
+
+    // What a scalar value `old` is swapped for when the YAML must stay valid: a rescaled copy of a number
+    // (x10, x0.1, x2, x0.5, negated, +1) or an extreme.
+    std::string replacement(const std::string& old) { return coin(2) ? rescaled(old) : pick_of(kValidExtremes); }
 
     // A --set override: a key path of the schema (placeholders filled in) with a value, then perhaps mangled.
     std::string override_text(const std::vector<std::string>& paths) {
@@ -94,42 +98,13 @@ public:
 
 private:
     // Values that keep YAML valid: the reader's range checks see them.
-    inline static const std::vector<std::string> kValidExtremes = {"0",
-                                                                   "-1",
-                                                                   "1",
-                                                                   "2",
-                                                                   "1e300",
-                                                                   "-1e300",
-                                                                   "1e-300",
-                                                                   ".nan",
-                                                                   ".inf",
-                                                                   "-.inf",
-                                                                   "nan",
-                                                                   "1e6",
-                                                                   "1e7",
-                                                                   "-1e6",
-                                                                   "1e-9",
-                                                                   "0.5",
-                                                                   "-0.5",
-                                                                   "100",
-                                                                   "2147483647",
-                                                                   "2147483648",
-                                                                   "-2147483649",
-                                                                   "4.9e-324",
-                                                                   "1.7976931348623157e308",
-                                                                   "true",
-                                                                   "false",
-                                                                   "auto",
-                                                                   "''",
-                                                                   "[]",
-                                                                   "{}",
-                                                                   "~",
-                                                                   "[0, 0]",
-                                                                   "[1e300, 0]",
-                                                                   "[0, 1e6]",
-                                                                   "[[0, 0]]",
-                                                                   "[0, 0, 0]",
-                                                                   "abc"};
+    // clang-format off
+    inline static const std::vector<std::string> kValidExtremes = {
+        "0", "-1", "1", "2", "0.5", "-0.5", "100", "1e6", "1e7", "-1e6", "1e-9", "1e300", "-1e300", "1e-300",
+        "4.9e-324", "1.7976931348623157e308", ".nan", "nan", ".inf", "-.inf", "2147483647", "2147483648",
+        "-2147483649", "true", "false", "auto", "abc", "''", "~", "[]", "{}", "[0, 0]", "[1e300, 0]", "[0, 1e6]",
+        "[[0, 0]]", "[0, 0, 0]"};
+    // clang-format on
 
     std::string extreme() {
         switch (pick(10)) {

@@ -395,6 +395,14 @@ TEST(CaseFile, GridLinesThatDoNotIncreaseAreRejected) {
                    {"line 2", "domain.x.end", "beyond the largest number"});
 }
 
+// Found with the fuzz's extreme values: the name '..' was read, and the results went to results/.. (the
+// working folder); a name with a NUL byte made a path cut short at it.
+TEST(CaseFile, NameThatCannotNameAFolderIsRejected) {
+    expect_message(error_of(kMinimal, {"name=.."}), {"--set name=..", "name: must not be '.' or '..'"});
+    expect_message(error_of(kMinimal + "name: \"run\\0two\"\n"), {"line 13", "name: must not contain control"});
+    EXPECT_EQ(parse_case_text(kMinimal, {"name=run.2"}).name, "run.2");
+}
+
 TEST(CaseFile, DuplicateKey) {
     expect_message(error_of(minimal_with("time:\n  end: 1.0\n", "time:\n  end: 1.0\n  end: 2.0\n")),
                    {"line 13", "time.end", "given twice (first on line 12)"});
