@@ -57,7 +57,10 @@ public:
 
     // What a scalar value `old` is swapped for when the YAML must stay valid: a rescaled copy of a number
     // (x10, x0.1, x2, x0.5, negated, +1) or an extreme.
-    std::string replacement(const std::string& old) { return coin(2) ? rescaled(old) : pick_of(kValidExtremes); }
+    std::string replacement(const std::string& old) {
+        const std::string r = coin(2) ? rescaled(old) : old;
+        return r != old ? r : pick_of(kValidExtremes);  // a word is not rescaled: always an extreme
+    }
 
     // A --set override: a key path of the schema (placeholders filled in) with a value, then perhaps mangled.
     std::string override_text(const std::vector<std::string>& paths) {

@@ -403,6 +403,17 @@ TEST(CaseFile, NameThatCannotNameAFolderIsRejected) {
     EXPECT_EQ(parse_case_text(kMinimal, {"name=run.2"}).name, "run.2");
 }
 
+// Found by the case fuzz: a '---' line in a case starts a second YAML document, and the reader read the first
+// only: the keys after it were dropped without a word (here output.plots: the run would have made its plots),
+// or a section after it was reported missing though written in the file.
+TEST(CaseFile, SecondYamlDocumentIsRejected) {
+    expect_message(error_of(kMinimal + "---\noutput: {plots: false}\n"),
+                   {"line 14", "a case is one YAML document, but a '---' line starts another one here"});
+    // One document, opened by '---' and closed by '...', or followed by an empty one, is still one.
+    EXPECT_EQ(parse_case_text("---\n" + kMinimal + "...\n").end_time, 1.0);
+    EXPECT_EQ(parse_case_text(kMinimal + "---\n").end_time, 1.0);
+}
+
 TEST(CaseFile, DuplicateKey) {
     expect_message(error_of(minimal_with("time:\n  end: 1.0\n", "time:\n  end: 1.0\n  end: 2.0\n")),
                    {"line 13", "time.end", "given twice (first on line 12)"});
