@@ -67,6 +67,15 @@ struct FlowConfig {
     std::array<int, 2> ranks{0, 0};  // 0: automatic
 };
 
+// The grid lines an axis of the case describes (its spacing and their parameters), made by the generators of
+// core/grid/axis.hpp. The reader makes them once to check them; the solver makes its grid from them.
+std::vector<double> axis_lines(const AxisConfig& c);
+
+// Cells a case may ask for, all axes together: a check before anything is allocated. A run takes about 700
+// bytes per cell with k-epsilon and bodies (360 laminar, measured at 1.5 million cells), so this is some 70 GB,
+// and it keeps every global cell index well inside hypre's 32-bit integers.
+constexpr double kMaxCells = 1e8;
+
 // The schema's flow section (io/case_reader.hpp): domain.*, fluid.*, initial.*, boundaries.*, numerics.* but
 // numerics.ibm, time.*, parallel.*; the placeholders `<axis>` (x, y) and `<side>` (left, right, bottom, top);
 // and the reading of it, with the checks inside the section (end > start, periodic pairs, wall velocity

@@ -35,6 +35,9 @@ void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
         if (!(a.end > a.start))
             r.fail(p + ".end",
                    "must be greater than " + p + ".start (" + exact_text(a.start) + "), got " + exact_text(a.end));
+        if (!std::isfinite(a.end - a.start))
+            r.fail(p + ".end", "the length end - start = " + exact_text(a.end) + " - " + exact_text(a.start) +
+                                   " is beyond the largest number");
         if (a.spacing == "clustered") {
             a.core = r.vector2(p + ".core");
             a.core_cells = static_cast<int>(r.integer(p + ".core_cells"));
@@ -45,11 +48,53 @@ void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
             if (!(a.ratio >= 1.0))
                 r.fail(p + ".ratio",
                        "clustered cells grow away from the window: ratio >= 1, got " + exact_text(a.ratio));
+            // Counted before the lines are made: ratio 1 across a long domain would ask for more than memory holds.
+            const double count = clustered_cell_count(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio);
+            if (count > kMaxCells)
+                r.fail(p + ".core_cells", "the window's " + std::to_string(a.core_cells) + " cells, growing by ratio " +
+                                              exact_text(a.ratio) + " to start and end, make about " +
+                                              exact_text(count) + " cells along this axis; a case may have at most " +
+                                              exact_text(kMaxCells) + " cells in all");
             const auto lines = clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio);
             a.cells = static_cast<int>(lines.size()) - 1;
         } else {
             a.cells = static_cast<int>(r.integer(p + ".cells"));
         }
+    }
+}
+
+// The key that sets the number of cells along an axis, and the one that shapes its lines, for messages.
+std::string count_key(const std::string& p, const AxisConfig& a) {
+    if (a.spacing == "lines") return p + ".lines";
+    return p + (a.spacing == "clustered" ? ".core_cells" : ".cells");
+}
+
+std::string shape_key(const std::string& p, const AxisConfig& a) {
+    if (a.spacing == "tanh") return p + ".beta";
+    if (a.spacing == "geometric" || a.spacing == "clustered") return p + ".ratio";
+    return count_key(p, a);
+}
+
+// The grid as a whole: no more cells than a case may have (checked before any line is made), then lines
+// that increase strictly (a strong tanh beta or geometric ratio makes neighbouring lines equal in double
+// precision, or overflows), as the solver's grid requires.
+void check_grid(const CaseReader& r, const FlowConfig& c) {
+    const double cells = static_cast<double>(c.x.cells) * c.y.cells;
+    if (cells > kMaxCells) {
+        const std::string kx = count_key("domain.x", c.x), ky = count_key("domain.y", c.y);
+        r.fail(c.x.cells >= c.y.cells ? kx : ky, "the grid would have " + std::to_string(c.x.cells) + " x " +
+                                                     std::to_string(c.y.cells) + " = " + exact_text(cells) +
+                                                     " cells (" + kx + ", " + ky + "); a case may have at most " +
+                                                     exact_text(kMaxCells) + " (about 70 GB at 700 bytes per cell)");
+    }
+    for (const auto& [p, a] : {std::pair<std::string, const AxisConfig*>{"domain.x", &c.x}, {"domain.y", &c.y}}) {
+        const std::vector<double> lines = axis_lines(*a);
+        for (std::size_t k = 1; k < lines.size(); ++k)
+            if (!(std::isfinite(lines[k]) && lines[k] > lines[k - 1]))
+                r.fail(shape_key(p, *a), "the grid lines of spacing '" + a->spacing + "' with " +
+                                             std::to_string(a->cells) + " cells do not increase strictly: line " +
+                                             std::to_string(k - 1) + " is " + exact_text(lines[k - 1]) + ", line " +
+                                             std::to_string(k) + " is " + exact_text(lines[k]));
     }
 }
 
@@ -381,6 +426,7 @@ FlowConfig read_flow(const CaseReader& r) {
     FlowConfig c;
     read_axis(r, "domain.x", c.x);
     read_axis(r, "domain.y", c.y);
+    check_grid(r, c);
     c.depth = r.number("domain.depth");
 
     c.density = r.number("fluid.density");

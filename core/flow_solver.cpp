@@ -11,14 +11,7 @@
 
 namespace chute {
 
-Axis build_axis(const AxisConfig& c, bool periodic) {
-    if (c.spacing == "lines") return Axis(c.lines, periodic);
-    if (c.spacing == "tanh") return Axis(tanh_lines(c.start, c.end, c.cells, c.beta), periodic);
-    if (c.spacing == "clustered")
-        return Axis(clustered_lines(c.start, c.end, c.core[0], c.core[1], c.core_cells, c.ratio), periodic);
-    if (c.spacing == "geometric") return Axis(geometric_lines(c.start, c.end, c.cells, c.ratio), periodic);
-    return Axis(uniform_lines(c.start, c.end, c.cells), periodic);
-}
+Axis build_axis(const AxisConfig& c, bool periodic) { return Axis(axis_lines(c), periodic); }
 
 FlowSolver::FlowSolver(const FlowConfig& config, MPI_Comm comm) : config_(config) {
     const bool px = config_.boundary[0].type == BoundaryType::periodic;

@@ -2,10 +2,13 @@
 // it is given.
 #include "case_reader.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <sstream>
 
 namespace chute {
 
@@ -123,6 +126,47 @@ std::string trim(const std::string& s) {
     return b == std::string::npos ? std::string{} : s.substr(b, e - b + 1);
 }
 
+// Where the first node of a document is, if the document holds one (an empty document does not count).
+class DocumentContent : public YAML::EventHandler {
+public:
+    YAML::Mark first = YAML::Mark::null_mark();
+
+    void OnDocumentStart(const YAML::Mark&) override {}
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { see(m); }
+    void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t, const std::string&) override { see(m); }
+    void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+        see(m);
+    }
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+        see(m);
+    }
+    void OnMapEnd() override {}
+
+private:
+    void see(const YAML::Mark& m) {
+        if (first.is_null()) first = m;
+    }
+};
+
+// The start of a second YAML document with something in it (after a '---' line), or a null mark. YAML::Load
+// reads the first document only and drops the rest without a word. (Not YAML::LoadAll: on some broken texts,
+// a lone ',' for one, yaml-cpp 0.7 yields empty documents without end, so the documents are capped here.)
+YAML::Mark start_of_second_document(const std::string& text) {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    DocumentContent first;
+    if (!parser.HandleNextDocument(first)) return YAML::Mark::null_mark();
+    for (int document = 1; document < 64; ++document) {
+        DocumentContent next;
+        if (!parser.HandleNextDocument(next)) break;
+        if (!next.first.is_null()) return next.first;
+    }
+    return YAML::Mark::null_mark();
+}
+
 }  // namespace
 
 std::string CaseReader::indexed(std::string_view path, std::size_t i) {
@@ -196,14 +240,19 @@ const CaseKey& CaseReader::key(std::string_view path, KeyType type) const {
 
 void CaseReader::add_text(const std::string& yaml_text) {
     YAML::Node root;
+    YAML::Mark second_document = YAML::Mark::null_mark();
     try {
         root = YAML::Load(yaml_text);
+        second_document = start_of_second_document(yaml_text);
     } catch (const YAML::Exception& e) {
         std::string where = file_.empty() ? "" : file_ + ", ";
         if (!e.mark.is_null())
             where += "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1);
         throw CaseError(where + ": YAML syntax error: " + e.msg);
     }
+    if (!second_document.is_null())
+        throw CaseError((file_.empty() ? "" : file_ + ", ") + "line " + std::to_string(second_document.line + 1) +
+                        ": a case is one YAML document, but a '---' line starts another one here");
     add_document(root);
 }
 

@@ -154,6 +154,11 @@ CaseConfig read_case(const CaseReader& r, const std::string& default_name) {
     if (c.name.empty()) r.fail("name", "must not be empty");
     if (c.name.find_first_of("/\\") != std::string::npos)
         r.fail("name", "must not contain '/' or '\\' (output files are named after it), got '" + c.name + "'");
+    // The results go to results/<name> by default: '.' and '..' would put them in results/ or beside it.
+    if (c.name == "." || c.name == "..")
+        r.fail("name", "must not be '.' or '..' (the results folder is results/<name>), got '" + c.name + "'");
+    if (std::any_of(c.name.begin(), c.name.end(), [](char ch) { return static_cast<unsigned char>(ch) < 0x20; }))
+        r.fail("name", "must not contain control characters (a file name is made of it)");
 
     static_cast<FlowConfig&>(c) = read_flow(r);
     c.gravity = read_gravity(r);

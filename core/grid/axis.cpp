@@ -91,4 +91,16 @@ std::vector<double> clustered_lines(double start, double end, double core_start,
     return x;
 }
 
+double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells,
+                            double ratio) {
+    const double h = (core_end - core_start) / core_cells;
+    // Widths h r, h r^2, ..., h r^n span L when h r (r^n - 1) / (r - 1) >= L: n = log(1 + L (r - 1) / (h r)) / log r.
+    const auto side = [&](double length) {
+        if (!(length > 0.0)) return 0.0;
+        if (ratio - 1.0 < 1e-12) return std::ceil(length / h);
+        return std::ceil(std::log1p(length * (ratio - 1.0) / (h * ratio)) / std::log(ratio));
+    };
+    return core_cells + side(core_start - start) + side(end - core_end);
+}
+
 }  // namespace chute

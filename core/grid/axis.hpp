@@ -45,5 +45,8 @@ std::vector<double> geometric_lines(double start, double end, int cells, double 
 // body, coarse far away.
 std::vector<double> clustered_lines(double start, double end, double core_start, double core_end, int core_cells,
                                     double ratio);
+// The number of cells clustered_lines() makes, to within one on each side of the window, without making them
+// (a case may ask for more than memory holds: ratio 1 across a long domain).
+double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells, double ratio);
 
 }  // namespace chute

@@ -367,6 +367,53 @@ TEST(CaseFile, AxisChecks) {
                    {"domain.x.lines", "at least 3 lines"});
 }
 
+// Found by the case fuzz (test_case_fuzz.cpp): a grid of more cells than memory holds was accepted, and a
+// clustered axis made its lines while being read (ratio 1 across a long domain, or a huge core_cells: the
+// reader threw std::bad_alloc or the process was killed); the grid is now counted before anything is made.
+TEST(CaseFile, GridBeyondTheCellLimitIsRejectedBeforeItIsMade) {
+    expect_message(error_of(kMinimal, {"domain.x.cells=10000000", "domain.y.cells=64"}),
+                   {"domain.x.cells", "10000000 x 64", "domain.y.cells", "at most 1e+08"});
+    expect_message(error_of(kMinimal, {"domain.y.cells=2147483647"}), {"domain.y.cells", "8 x 2147483647"});
+    const std::string clustered = "domain.x={start: 0, end: 1, spacing: clustered, core: [0.4, 0.6], ";
+    expect_message(error_of(kMinimal, {clustered + "core_cells: 2147483647}"}),
+                   {"domain.x.core_cells", "at most 1e+08"});
+    expect_message(error_of(kMinimal, {"domain.x={start: 0, end: 1e300, spacing: clustered, core: [0.4, 0.6], "
+                                       "core_cells: 10, ratio: 1}"}),
+                   {"domain.x.core_cells", "growing by ratio 1"});
+    EXPECT_EQ(parse_case_text(kMinimal, {clustered + "core_cells: 10, ratio: 1}"}).x.cells, 50);
+}
+
+// Found by the case fuzz: lines that a strong stretching makes equal in double precision (tanh beta 1e300,
+// geometric ratio 1e300) or a length that overflows were accepted, and the solver stopped with
+// std::invalid_argument ("grid lines must increase strictly", exit code 1).
+TEST(CaseFile, GridLinesThatDoNotIncreaseAreRejected) {
+    expect_message(error_of(kMinimal, {"domain.x={start: 0, end: 1, cells: 100, spacing: tanh, beta: 1e300}"}),
+                   {"domain.x.beta", "spacing 'tanh' with 100 cells do not increase strictly"});
+    expect_message(error_of(kMinimal, {"domain.y={start: 0, end: 1, cells: 100, spacing: geometric, ratio: 1e300}"}),
+                   {"domain.y.ratio", "do not increase strictly"});
+    expect_message(error_of(minimal_with("x: {start: 0, end: 1", "x: {start: -1e308, end: 1e308")),
+                   {"line 2", "domain.x.end", "beyond the largest number"});
+}
+
+// Found with the fuzz's extreme values: the name '..' was read, and the results went to results/.. (the
+// working folder); a name with a NUL byte made a path cut short at it.
+TEST(CaseFile, NameThatCannotNameAFolderIsRejected) {
+    expect_message(error_of(kMinimal, {"name=.."}), {"--set name=..", "name: must not be '.' or '..'"});
+    expect_message(error_of(kMinimal + "name: \"run\\0two\"\n"), {"line 13", "name: must not contain control"});
+    EXPECT_EQ(parse_case_text(kMinimal, {"name=run.2"}).name, "run.2");
+}
+
+// Found by the case fuzz: a '---' line in a case starts a second YAML document, and the reader read the first
+// only: the keys after it were dropped without a word (here output.plots: the run would have made its plots),
+// or a section after it was reported missing though written in the file.
+TEST(CaseFile, SecondYamlDocumentIsRejected) {
+    expect_message(error_of(kMinimal + "---\noutput: {plots: false}\n"),
+                   {"line 14", "a case is one YAML document, but a '---' line starts another one here"});
+    // One document, opened by '---' and closed by '...', or followed by an empty one, is still one.
+    EXPECT_EQ(parse_case_text("---\n" + kMinimal + "...\n").end_time, 1.0);
+    EXPECT_EQ(parse_case_text(kMinimal + "---\n").end_time, 1.0);
+}
+
 TEST(CaseFile, DuplicateKey) {
     expect_message(error_of(minimal_with("time:\n  end: 1.0\n", "time:\n  end: 1.0\n  end: 2.0\n")),
                    {"line 13", "time.end", "given twice (first on line 12)"});

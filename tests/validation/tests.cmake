@@ -8,9 +8,11 @@ add_executable(chute_validation_tests
   ${CMAKE_CURRENT_LIST_DIR}/test_bluff_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_free_bodies.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_turbulence.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_case_fuzz_runs.cpp
   $<TARGET_OBJECTS:chute_gtest_main>)
 target_link_libraries(chute_validation_tests PRIVATE chute_run GTest::gtest)
-target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_definitions(chute_validation_tests PRIVATE CHUTE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+                                                          CHUTE_BINARY="$<TARGET_FILE:chute>")
 
 # Runs a validation test on `ranks` MPI ranks.
 function(chute_validation name filter ranks labels)
@@ -58,3 +60,9 @@ chute_validation(free_fall_block_k_epsilon Turbulence.StudyBlockFallsAtTheExperi
 chute_validation(slope_runout_water_air Turbulence.SlopeRunoutInWaterIsShorterThanInAir 2 "validation;slow")
 chute_validation(square_cylinder_re22000 Turbulence.SquareCylinderRe22000 2 "validation;slow")
 chute_validation(square_cylinder_re22000_empty Turbulence.SquareCylinderDomainWithoutBodyMakesNoTurbulence 2 "validation")
+
+# Fuzzing whole runs (test_case_fuzz_runs.cpp): the chute tool on 360 mutated example cases, two steps each,
+# about 15 min. Started without mpiexec: a tool started from an mpirun-launched rank inherits the job's
+# environment and fails in MPI_Init (tests/CMakeLists.txt, unit_np2).
+add_test(NAME case_fuzz_runs COMMAND $<TARGET_FILE:chute_validation_tests> --gtest_filter=CaseFuzzRuns.*)
+set_tests_properties(case_fuzz_runs PROPERTIES LABELS "slow;fuzz" TIMEOUT 5400)

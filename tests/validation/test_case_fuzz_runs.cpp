@@ -1,0 +1,180 @@
+// Fuzzing whole runs: mutated example cases run by the chute binary for two steps (label slow, not in CI).
+//
+// Checks: 360 cases, 20 from each example (examples/*/*.yaml), each the example with one or two of its
+// values swapped through --set for an extreme or a rescaled copy (tests/fuzz/case_mutator.hpp: 0, -1,
+// +-1e300, nan, inf, 2147483647, 1e6, [], ..., or the value x10, x0.1, x2, x0.5, negated, +1), so the YAML
+// stays valid and a good share pass the reader and run. Each runs as
+//   chute run EXAMPLE --set KEY=VALUE [--set KEY=VALUE] --set time.max_steps=2 --no-plots --out DIR
+// under a 30 s wall-clock limit. Allowed exit codes: 0 (ran), 2 (the case was rejected, with its message),
+// 3 (the solver stopped the run with a message). Anything else fails: a signal (SIGSEGV, SIGABRT, killed),
+// exit 1 (an exception the tool did not expect: std::bad_alloc, std::invalid_argument, ...), the time
+// limit (a hang) or more than 10 MB of output (a message repeated without end). Expected and reported apart, not
+// failed: a time-out of a k-epsilon case whose fluid.viscosity was raised (the k-epsilon sub-steps are not yet bounded;
+// that fix is turbulence/'s). Each failure is reported with its command line, which reproduces it from the source
+// folder.
+//   ctest -R case_fuzz_runs --output-on-failure        (from build/; about 15 min on 2 cores)
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+#include <csignal>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../fuzz/case_mutator.hpp"
+#include "../unit/print_on_rank0.hpp"
+
+namespace chute {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uint64_t kSeed = 20240615;
+constexpr int kCasesPerExample = 20;
+constexpr int kTimeLimitSeconds = 30;
+constexpr int kLogBlocks = 20000;  // 512-byte blocks: a run writing more than 10 MB of log is stopped (SIGXFSZ)
+constexpr int kLogFlooded = 128 + SIGXFSZ;
+
+// A value of the case that a --set can replace: its key path and its YAML text. Lists are whole values
+// (vector2, probes, lines): one element of them is changed.
+struct Leaf {
+    std::string path;
+    YAML::Node node;
+};
+
+void collect_leaves(const YAML::Node& node, const std::string& path, std::vector<Leaf>& leaves) {
+    if (node.IsMap()) {
+        for (const auto& item : node)
+            collect_leaves(item.second, path.empty() ? item.first.Scalar() : path + "." + item.first.Scalar(), leaves);
+    } else if (!path.empty() && (node.IsScalar() || node.IsSequence())) {
+        leaves.push_back({path, node});
+    }
+}
+
+// The YAML text of a node in flow style: [a, b], [[a, b], [c, d]].
+std::string flow_text(const YAML::Node& n) {
+    if (!n.IsSequence()) return n.Scalar();
+    std::string s = "[";
+    for (std::size_t i = 0; i < n.size(); ++i) s += (i ? ", " : "") + flow_text(n[i]);
+    return s + "]";
+}
+
+// The leaf with one of its scalars swapped.
+std::string mutated_value(fuzz::CaseMutator& m, const YAML::Node& n) {
+    if (n.IsScalar()) return m.replacement(n.Scalar());
+    if (n.size() == 0) return m.replacement("0");
+    YAML::Node copy = YAML::Clone(n);
+    YAML::Node element = copy[m.pick(copy.size())];
+    if (element.IsSequence() && element.size() > 0) element = element[m.pick(element.size())];
+    if (element.IsScalar()) element = m.replacement(element.Scalar());
+    return flow_text(copy);
+}
+
+struct Outcome {
+    int exit_code;
+    double seconds;
+    std::string last_line;  // the message the tool ended with
+};
+
+Outcome run(const std::string& args, const fs::path& log) {
+    // From the source folder: the example paths in the report are relative to it.
+    const std::string cmd = "cd '" + std::string(CHUTE_SOURCE_DIR) + "' && ulimit -f " + std::to_string(kLogBlocks) +
+                            " && timeout -k 5 " + std::to_string(kTimeLimitSeconds) + " " + std::string(CHUTE_BINARY) +
+                            " " + args + " > '" + log.string() + "' 2>&1";
+    const auto start = std::chrono::steady_clock::now();
+    const int status = std::system(cmd.c_str());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::ifstream in(log);
+    std::string line, last;
+    while (std::getline(in, line))
+        if (!line.empty()) last = line;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), seconds, last};
+}
+
+std::string quoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+TEST(CaseFuzzRuns, MutatedExamplesRunOrStopWithAMessage) {
+    std::vector<fs::path> examples;
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(CHUTE_SOURCE_DIR) / "examples"))
+        if (e.path().extension() == ".yaml") examples.push_back(e.path());
+    std::sort(examples.begin(), examples.end());
+    ASSERT_GE(examples.size(), 15u);
+    const fs::path dir = fs::temp_directory_path() / ("chute_case_fuzz_runs_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+
+    std::map<int, int> by_exit_code;
+    int cases = 0, known = 0, hangs = 0, crashes = 0;
+    double slowest = 0.0;
+    std::string report;
+    for (std::size_t e = 0; e < examples.size(); ++e) {
+        const YAML::Node root = YAML::LoadFile(examples[e].string());
+        std::vector<Leaf> leaves;
+        collect_leaves(root, "", leaves);
+        const bool k_epsilon =
+            root["turbulence"] && root["turbulence"]["model"] && root["turbulence"]["model"].Scalar() == "k_epsilon";
+        for (int k = 0; k < kCasesPerExample; ++k) {
+            fuzz::CaseMutator m(kSeed + e * kCasesPerExample + static_cast<std::uint64_t>(k));
+            std::vector<std::string> sets;
+            bool viscosity_changed = false;
+            for (std::size_t n = m.coin(3) ? 2 : 1; n > 0; --n) {
+                const Leaf& leaf = leaves[m.pick(leaves.size())];
+                sets.push_back(leaf.path + "=" + mutated_value(m, leaf.node));
+                viscosity_changed = viscosity_changed || leaf.path == "fluid.viscosity";
+            }
+            const fs::path out = dir / "out";
+            std::string args = "run " + quoted(fs::relative(examples[e], CHUTE_SOURCE_DIR).string());
+            for (const std::string& s : sets) args += " --set " + quoted(s);
+            args += " --set time.max_steps=2 --no-plots --out ";
+            const Outcome o = run(args + quoted(out.string()), dir / "chute.log");
+            fs::remove_all(out);
+            ++cases;
+            ++by_exit_code[o.exit_code];
+            slowest = std::max(slowest, o.seconds);
+            const bool allowed = o.exit_code == 0 || o.exit_code == 2 || o.exit_code == 3;
+            const std::string line = "exit " + std::to_string(o.exit_code) + ", " + std::to_string(o.seconds) +
+                                     " s: chute " + args + "DIR\n    " + o.last_line + "\n";
+            report += line;
+            if (allowed) continue;
+            // timeout(1) sends SIGTERM at the limit, which a run stuck inside a step does not heed, then SIGKILL.
+            const bool hang = o.seconds >= kTimeLimitSeconds;
+            if (hang && k_epsilon && viscosity_changed) {
+                ++known;
+                print_on_rank0("known (k-epsilon sub-steps, not bounded yet): %s", line.c_str());
+                continue;
+            }
+            ++(hang ? hangs : crashes);
+            ADD_FAILURE() << (hang                         ? "a hang (time limit reached)"
+                              : o.exit_code == kLogFlooded ? "a flood of output (over 10 MB)"
+                                                           : "a crash")
+                          << ": " << line;
+        }
+    }
+    std::ofstream(dir / "report.txt") << report;
+    std::string counts;
+    for (const auto& [code, n] : by_exit_code)
+        counts += " exit " + std::to_string(code) + ": " + std::to_string(n) + ";";
+    print_on_rank0(
+        "case fuzz runs: %d cases from %zu examples (seed %llu):%s crashes %d, hangs %d, known k-epsilon hangs %d; "
+        "slowest %.1f s; every command in %s\n",
+        cases, examples.size(), static_cast<unsigned long long>(kSeed), counts.c_str(), crashes, hangs, known, slowest,
+        (dir / "report.txt").string().c_str());
+    EXPECT_GE(cases, 300);
+    // A good share of the mutated cases must get past the reader, or the solver is not being fuzzed.
+    EXPECT_GT(by_exit_code[0] + by_exit_code[3], cases / 4);
+}
+
+}  // namespace
+}  // namespace chute
