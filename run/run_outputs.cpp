@@ -31,6 +31,17 @@ double next_time(double t, double interval) {
     return interval > 0.0 ? (std::floor(t / interval + 1e-9) + 1) * interval : std::numeric_limits<double>::infinity();
 }
 
+// The schedule's next time after t: normally one or a few additions of the interval. A schedule far
+// behind t (a restart with a new interval), or an interval below the round-off of t (time.end 1e308 with
+// an interval of 10 s, where adding changes nothing), jumps to the first multiple above t instead.
+double advance_schedule(double next, double t, double interval) {
+    for (int k = 0; k < 1000 && next <= t; ++k) next += interval;
+    if (next <= t)
+        next = std::max(std::nextafter(t, std::numeric_limits<double>::infinity()),
+                        (std::floor(t / interval) + 1) * interval);
+    return next;
+}
+
 bool is_root(MPI_Comm comm) {
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
@@ -129,12 +140,12 @@ void RunOutputs::write_due(const StepStats& step, const FlowHealth& health, cons
     if (config.timeseries_every > 0 && flow.step() % config.timeseries_every == 0) record(step, health, forces);
     if (flow.time() >= next_field_time_ - eps) {
         write_fields();
-        while (next_field_time_ <= flow.time() + eps) next_field_time_ += config.field_interval;
+        next_field_time_ = advance_schedule(next_field_time_, flow.time() + eps, config.field_interval);
     }
     if (flow.time() >= next_checkpoint_time_ - eps) {
         write_checkpoint();
         write_series_hdf5();
-        while (next_checkpoint_time_ <= flow.time() + eps) next_checkpoint_time_ += config.checkpoint_interval;
+        next_checkpoint_time_ = advance_schedule(next_checkpoint_time_, flow.time() + eps, config.checkpoint_interval);
     }
 }
 

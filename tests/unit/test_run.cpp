@@ -397,3 +397,33 @@ TEST(Cli, PoissonSolveAtItsBoundIsReportedOnce) {
     ASSERT_NE(first, std::string::npos) << r.output;
     EXPECT_EQ(r.output.find(note, first + 1), std::string::npos) << "noted once\n" << r.output;
 }
+
+// Found by the whole-run fuzz (case_fuzz_runs): an end time so far away that adding an output interval to
+// the schedule's next time changed nothing, and the schedule's loop never ended. Two steps now end at once.
+TEST(Cli, OutputScheduleOfAHugeEndTimeAdvances) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_huge_end");
+    write_text(dir / "case.yaml", kSmallCavity);
+    const auto r = run_chute("run '" + (dir / "case.yaml").string() + "' --out '" + (dir / "out").string() +
+                                 "' --set time.end=1.7976931348623157e308 --set time.max_steps=2"
+                                 " --set output.fields_interval=10 --set output.checkpoint_interval=10",
+                             dir, "timeout -s KILL 60 ");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("2 steps"), std::string::npos) << r.output;
+}
+
+// Found by the whole-run fuzz: a block thrown at the bed at 2e9 m/s made the lumped model's CVODE find the
+// same root again and again, printing a warning each time (thousands of lines, memory without end). It now
+// settles after 1000 impacts, and CVODE's warnings are not printed.
+TEST(Cli, LumpedModelOfABlockThrownAtTheBedEndsQuietly) {
+    if (!single_rank()) GTEST_SKIP() << "starts its own process";
+    const fs::path dir = scratch("cli_lumped_flood");
+    const fs::path example = fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_current" / "case.yaml";
+    const auto r = run_chute("run '" + example.string() + "' --out '" + (dir / "out").string() +
+                                 "' --no-plots --set 'initial.velocity=[1.0, -2147483649]' --set time.end=0.02"
+                                 " --set time.max_steps=2",
+                             dir, "timeout -s KILL 60 ");
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.exit_code << "\n" << r.output;
+    EXPECT_EQ(r.output.find("CVODE WARNING"), std::string::npos) << r.output.substr(0, 2000);
+    EXPECT_LT(std::count(r.output.begin(), r.output.end(), '\n'), 20) << r.output.substr(0, 2000);
+}
