@@ -262,7 +262,7 @@ std::string KEpsilon::too_many_substeps(double needed, double dt, double max_nu_
     std::ostringstream m;
     m << "the k-epsilon transport would need " << std::setprecision(2) << needed << " sub-steps in one step of "
       << std::setprecision(3) << dt << " s (turbulence.max_substeps = " << settings_.model.max_substeps << "): ";
-    if (!std::isfinite(needed))
+    if (!std::isfinite(max_nu_t))
         m << "the eddy viscosity is no longer finite";
     else if (nu >= max_nu_t / C::sigma_k)
         m << "fluid.viscosity " << std::setprecision(6) << nu << " m^2/s is " << std::setprecision(2) << nu / water
