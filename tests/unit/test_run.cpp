@@ -13,10 +13,15 @@
 
 #include "case_file.hpp"
 #include "checkpoint.hpp"
+#include "chute_process.hpp"
 #include "hdf5_file.hpp"
 #include "simulation.hpp"
 
 using namespace chute;
+using chute_test::CommandResult;
+using chute_test::read_text;
+using chute_test::single_rank;
+using chute_test::write_text;
 namespace fs = std::filesystem;
 
 namespace {
@@ -56,13 +61,6 @@ output: {probes: [[1.0, 0.5]], checkpoint_interval: 0.5}
 std::vector<double> read_field(const fs::path& file, const std::string& name) {
     auto f = Hdf5File::open_read(file);
     return f.read("/fields/" + name);
-}
-
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 }  // namespace
@@ -146,11 +144,6 @@ TEST(Restart, FreeBodyRestartEqualsStraightRun) {
 
 namespace {
 
-struct CommandResult {
-    int exit_code;
-    std::string output;
-};
-
 // `prefix` runs chute under another command (e.g. timeout).
 CommandResult run_chute(const std::string& args, const fs::path& dir, const std::string& prefix = "") {
     const fs::path log = dir / "chute.log";
@@ -175,14 +168,6 @@ CommandResult run_chute_signalled(const std::string& args, const fs::path& dir, 
     script += "wait $pid; echo $? > '" + code.string() + "'";
     std::system(script.c_str());
     return {std::stoi(read_text(code)), read_text(log)};
-}
-
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-bool single_rank() {
-    int size = 1;
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    return size == 1;
 }
 
 const char* kSmallCavity = R"(
