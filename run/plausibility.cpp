@@ -26,24 +26,14 @@ std::string number(double v) {
 
 bool closed(BodyShape s) { return s == BodyShape::circle || s == BodyShape::rectangle || s == BodyShape::polygon; }
 
-// The body's corners as placed (rectangle and polygon), for its width and its centre.
-std::vector<Vec2> corners(const BodyConfig& b) {
-    std::vector<Vec2> v;
-    if (b.shape == BodyShape::rectangle) {
-        const Vec2 c(b.centre[0], b.centre[1]), ex(std::cos(b.angle), std::sin(b.angle)), ey = perp(ex);
-        for (const auto& [sx, sy] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-            v.push_back(c + 0.5 * sx * b.size[0] * ex + 0.5 * sy * b.size[1] * ey);
-    } else {
-        for (const auto& p : b.vertices) v.emplace_back(p[0], p[1]);
-    }
-    return v;
-}
-
-// The narrowest width of a closed body: a circle's diameter; for a polygon the least extent across its edges'
-// normals (exact for convex outlines, where the narrowest width is always measured across an edge).
+// The narrowest width of a closed body: a circle's diameter, a rectangle's shorter side; for a polygon the
+// least extent across its edges' normals (exact for convex outlines, where the narrowest width is always
+// measured across an edge).
 double narrowest_width(const BodyConfig& b) {
     if (b.shape == BodyShape::circle) return b.diameter;
-    const std::vector<Vec2> v = corners(b);
+    if (b.shape == BodyShape::rectangle) return std::min(b.size[0], b.size[1]);
+    std::vector<Vec2> v;
+    for (const auto& p : b.vertices) v.emplace_back(p[0], p[1]);
     double width = std::numeric_limits<double>::infinity();
     for (std::size_t e = 0; e < v.size(); ++e) {
         const Vec2 edge = v[(e + 1) % v.size()] - v[e];
