@@ -18,23 +18,12 @@
 
 #include "case_file.hpp"
 #include "hdf5_file.hpp"
+#include "leak_check.hpp"
 #include "output_error.hpp"
 #include "plausibility.hpp"
 #include "restart_state.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
-
-// LeakSanitizer (CHUTE_SANITIZE builds, scripts/test-sanitizers.sh): OpenMPI and hypre allocate blocks in
-// MPI_Init/HYPRE_Init and MPI_Finalize/HYPRE_Finalize that they never free. Those calls run with leak
-// tracking off; everything allocated in between is checked.
-#if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/lsan_interface.h>
-#define CHUTE_LSAN_IGNORE_BEGIN __lsan_disable()
-#define CHUTE_LSAN_IGNORE_END __lsan_enable()
-#else
-#define CHUTE_LSAN_IGNORE_BEGIN
-#define CHUTE_LSAN_IGNORE_END
-#endif
 
 namespace {
 

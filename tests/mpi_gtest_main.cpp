@@ -6,17 +6,7 @@
 
 #include <HYPRE_utilities.h>
 
-// LeakSanitizer (CHUTE_SANITIZE builds, scripts/test-sanitizers.sh): OpenMPI and hypre allocate blocks in
-// MPI_Init/HYPRE_Init and MPI_Finalize/HYPRE_Finalize that they never free. Those calls run with leak
-// tracking off; everything allocated in between is checked.
-#if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/lsan_interface.h>
-#define CHUTE_LSAN_IGNORE_BEGIN __lsan_disable()
-#define CHUTE_LSAN_IGNORE_END __lsan_enable()
-#else
-#define CHUTE_LSAN_IGNORE_BEGIN
-#define CHUTE_LSAN_IGNORE_END
-#endif
+#include "leak_check.hpp"
 
 int main(int argc, char** argv) {
     CHUTE_LSAN_IGNORE_BEGIN;
