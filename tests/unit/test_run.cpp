@@ -3,13 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "case_file.hpp"
 #include "checkpoint.hpp"
@@ -154,20 +155,23 @@ CommandResult run_chute(const std::string& args, const fs::path& dir, const std:
 
 // Runs chute in the background and, once `started` exists (the run's first output: set-up is over, however
 // loaded the machine), sends it `signal` after each delay (s) in turn, then waits for it. A run still alive
-// 60 s after its start is killed (exit code 128 + 9; the watchdog ends with the run), so a hang fails the
-// test instead of hanging it. (Not under timeout(1): it forwards only the first of two signals.)
+// 60 s after its start is killed (exit code 128 + 9), so a hang fails the test instead of hanging it.
 CommandResult run_chute_signalled(const std::string& args, const fs::path& dir, const fs::path& started,
                                   const std::vector<double>& delays, int signal = SIGTERM) {
-    const fs::path log = dir / "chute.log", code = dir / "exit_code";
-    std::string script = std::string(CHUTE_BINARY) + " " + args + " > '" + log.string() + "' 2>&1 & pid=$!; " +
-                         "(for i in $(seq 600); do sleep 0.1; kill -0 $pid || exit 0; done; kill -KILL $pid) " +
-                         "> /dev/null 2>&1 & " + "while [ ! -e '" + started.string() +
-                         "' ] && kill -0 $pid 2>/dev/null; do sleep 0.1; done; ";
-    for (double d : delays)
-        script += "sleep " + std::to_string(d) + "; kill -" + std::to_string(signal) + " $pid 2>/dev/null; ";
-    script += "wait $pid; echo $? > '" + code.string() + "'";
-    std::system(script.c_str());
-    return {std::stoi(read_text(code)), read_text(log)};
+    using clock = std::chrono::steady_clock;
+    const fs::path log = dir / "chute.log";
+    const auto deadline = clock::now() + std::chrono::seconds(60);
+    const auto pause = [](double seconds) { std::this_thread::sleep_for(std::chrono::duration<double>(seconds)); };
+    chute_test::ChuteProcess run(args, log);
+    while (!fs::exists(started) && run.running() && clock::now() < deadline) pause(0.1);
+    for (double d : delays) {
+        pause(d);
+        if (run.running()) ::kill(run.pid(), signal);
+    }
+    while (run.running() && clock::now() < deadline) pause(0.1);
+    if (run.running()) ::kill(run.pid(), SIGKILL);
+    const int code = run.wait();
+    return {code, read_text(log)};
 }
 
 const char* kSmallCavity = R"(
