@@ -36,9 +36,7 @@ double next_time(double t, double interval) {
 // an interval of 10 s, where adding changes nothing), jumps to the first multiple above t instead.
 double advance_schedule(double next, double t, double interval) {
     for (int k = 0; k < 1000 && next <= t; ++k) next += interval;
-    if (next <= t)
-        next = std::max(std::nextafter(t, std::numeric_limits<double>::infinity()),
-                        (std::floor(t / interval) + 1) * interval);
+    if (next <= t) next = std::max(std::nextafter(t, std::numeric_limits<double>::infinity()), next_time(t, interval));
     return next;
 }
 
