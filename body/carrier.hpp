@@ -8,6 +8,9 @@
 //   impose(u*, dt)                        the bodies on the predicted velocity (forcing, or boundary values)
 //   (pressure projection)
 //   hydrodynamic_wrench(b, u^{n+1}, dt)   on free body b, at its predicted place: what moves it
+//   [impose(u^{n+1}, dt), (projection), hydrodynamic_wrench(...)]   again, in a strongly coupled step
+//                                         (rigidbody/free_bodies.hpp): the momentum imposed on the flow is
+//                                         summed over the step's passes, from zero at begin_step
 //   measure(u^{n+1}, p, turbulence)       the force record of every body, both measures (body_forces.hpp)
 //
 // and the turbulence model asks it where the walls are: fluid_cells(), and sample_walls(u, k) at the cells

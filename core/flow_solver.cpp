@@ -197,6 +197,31 @@ double FlowSolver::predict(double dt) {
 
 StepStats FlowSolver::project() {
     StepStats stats = pending_;
+    stats.coupling_passes = 1;
+    solve_and_correct(stats);
+    publish_velocity();
+    std::swap(rhs_, rhs_old_);
+    time_ += stats.dt;
+    dt_previous_ = stats.dt;
+    ++step_;
+    return stats;
+}
+
+Velocity& FlowSolver::reopen() {
+    star_ = vel_;
+    return star_;
+}
+
+StepStats FlowSolver::reproject() {
+    StepStats stats;
+    stats.dt = dt_previous_;
+    phi_.fill(0.0);  // the first pass's increment is in p already: this pass's is small
+    solve_and_correct(stats);
+    publish_velocity();
+    return stats;
+}
+
+void FlowSolver::solve_and_correct(StepStats& stats) {
     const double dt = stats.dt;
     // 1. Pressure-increment Poisson equation laplacian(phi) = div(u*) / dt.
     {
@@ -217,15 +242,13 @@ StepStats FlowSolver::project() {
         for (int i = 0; i < grid_->nx(); ++i) p_(i, j) += phi_(i, j);
     halo_->exchange(p_);
     bc_->apply_pressure(p_);
+}
+
+void FlowSolver::publish_velocity() {
+    StageTimer::Scope timed(timer_, "correction");
     std::swap(vel_, star_);
-    std::swap(rhs_, rhs_old_);
     halo_->exchange(vel_);
     bc_->apply(vel_);
-
-    time_ += dt;
-    dt_previous_ = dt;
-    ++step_;
-    return stats;
 }
 
 }  // namespace chute

@@ -36,6 +36,7 @@ struct StepStats {
     int poisson_iterations = 0;
     int diffusion_iterations = 0;  // implicit diffusion: PCG iterations of the larger component
     double poisson_residual = 0.0;
+    int coupling_passes = 0;  // forcing and projection passes of the step (run/step.cpp: strong coupling)
 };
 
 class FlowSolver {
@@ -51,6 +52,12 @@ public:
     double predict(double dt = 0.0);
     Velocity& predicted() { return star_; }
     StepStats project();
+    // A further pass within the step just taken, for a body coupled strongly to the flow (run/step.cpp):
+    // reopen() hands back u^{n+1} as the velocity to force again, reproject() projects it again
+    // (laplacian(phi) = div(u)/dt from phi = 0, u -= dt grad phi, p^{n+1/2} += phi). Time, step count and
+    // the AB2 history stay those of the step; the returned stats are this pass's solve.
+    Velocity& reopen();
+    StepStats reproject();
     // The step advance() would take: min of the CFL and diffusion limits (none with implicit diffusion),
     // max_dt, or the fixed dt.
     double next_dt() const;
@@ -95,6 +102,8 @@ private:
     void predict_velocity(double dt, double r);                   // u* from u^n, H^n, H^{n-1}, f, p
     void pressure_increment_guess(double r);                      // phi <- r (p^n - p^{n-1})
     double poisson_residual_floor(double dt) const;               // absolute tolerance of the solve
+    void solve_and_correct(StepStats& stats);                     // star_ projected, p_ += phi_
+    void publish_velocity();                                      // vel_ <- star_, halos and boundaries
 
     FlowConfig config_;
     std::unique_ptr<Grid> grid_;

@@ -9,6 +9,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       bodies_(bodies),
       walls_(grid, bodies, settings.image_distance),
       start_momentum_(bodies.size()),
+      step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
     forcing_ = std::make_unique<DirectForcing>(grid, settings.ibm, bodies_);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -16,8 +17,23 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 }
 
 void ImmersedBoundary::begin_step(const Velocity& start) {
+    for (BodyForcing& f : step_forcing_) f = BodyForcing{};
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
+}
+
+void ImmersedBoundary::impose(Velocity& predicted, double dt) {
+    if (bodies_.empty()) return;
+    forcing_->apply(predicted, dt);
+    // A further pass of the step forces the projected velocity again: the fluid receives the momentum of
+    // every pass, and the slip left is the last pass's.
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const BodyForcing& pass = forcing_->forcing()[b];
+        step_forcing_[b].momentum_rate += pass.momentum_rate;
+        step_forcing_[b].torque_rate += pass.torque_rate;
+        step_forcing_[b].max_slip = pass.max_slip;
+        step_forcing_[b].rms_slip = pass.rms_slip;
+    }
 }
 
 void ImmersedBoundary::place(double t) {
@@ -26,7 +42,7 @@ void ImmersedBoundary::place(double t) {
 
 Wrench ImmersedBoundary::hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) {
     const double rho = settings_.density, depth = settings_.depth;
-    const BodyForcing& forcing = forcing_->forcing()[b];
+    const BodyForcing& forcing = step_forcing_[b];
     const EnclosedMomentum P = enclosed_momentum(grid_, vel, bodies_[b]);  // at the predicted place
     const EnclosedMomentum& P0 = start_momentum_[b];
     wrench_[b].force = rho * depth * (-forcing.momentum_rate + (P.linear - P0.linear) / dt);
@@ -40,7 +56,7 @@ std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Fie
     const double rho = settings_.density, depth = settings_.depth;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
-        const BodyForcing& f = forcing_->forcing()[b];
+        const BodyForcing& f = step_forcing_[b];
         BodyForces& r = out[b];
         if (body.free()) {
             r.forcing = wrench_[b].force;

@@ -4,7 +4,9 @@
 //
 //   begin_step(u^n)                  the fluid momentum P^n inside each free body (enclosed_momentum)
 //   place(t^{n+1})                   prescribed motion (free bodies are placed by rigidbody/free_bodies)
-//   impose(u*, dt)                   direct forcing of the predicted velocity (direct_forcing)
+//   impose(u*, dt)                   direct forcing of the predicted velocity (direct_forcing); again on
+//                                    u^{n+1} for each further pass of a strongly coupled step, the momentum
+//                                    given to the fluid summed over the passes
 //   (projection)
 //   hydrodynamic_wrench(b, u^{n+1})  on a free body at its predicted place (Uhlmann 2005 eq. 23, the internal
 //                                    fluid's momentum from the grid, Kempe & Froehlich 2012):
@@ -46,9 +48,7 @@ public:
 
     void begin_step(const Velocity& start) override;
     void place(double t) override;
-    void impose(Velocity& predicted, double dt) override {
-        if (!bodies_.empty()) forcing_->apply(predicted, dt);
-    }
+    void impose(Velocity& predicted, double dt) override;
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
 
@@ -69,6 +69,7 @@ private:
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
     ImmersedWall walls_;
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
+    std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
 };
 

@@ -1,5 +1,6 @@
 #include "free_bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -18,6 +19,9 @@ FreeBodies::FreeBodies(const FreeBodySettings& settings, std::vector<Body>& bodi
         f.fluid_mass = rho * body.area() * depth;
         f.fluid_inertia = rho * body.polar_moment() * depth;
         f.start = body.state();
+        // A neutrally buoyant body: the scale is g itself.
+        f.weight_acceleration =
+            std::max(std::abs(f.inertia.mass - f.fluid_mass), 1e-3 * f.inertia.mass) * g.norm() / f.inertia.mass;
         // First prediction: gravity and buoyancy against the body's and the virtual mass.
         const double cv = settings_.virtual_mass;
         f.acceleration = (f.inertia.mass - f.fluid_mass) * g / (f.inertia.mass + cv * f.fluid_mass);
@@ -47,47 +51,90 @@ double FreeBodies::max_dt(double cfl) const {
 }
 
 void FreeBodies::predict(double t, double dt) {
+    impulsive_ = false;
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         f.start = body.state();
         f.contact_at_start = f.contact;
+        f.held_acceleration = f.acceleration;
+        f.held_angular_acceleration = f.angular_acceleration;
         BodyState s = f.start;
         s.acceleration = f.acceleration;
         s.angular_acceleration = f.angular_acceleration;
         ContactState c = f.contact;
-        move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles, settings_.contact);
+        const auto events = move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles,
+                                               settings_.contact);
+        f.impact = settings_.contact.law != ReboundLaw::soft && !events.empty();
+        // The step after an impact too: its held accelerations are those from before the impact.
+        impulsive_ = impulsive_ || f.impact || f.after_impact || !f.started;
+        f.after_impact = f.impact;
+        f.started = true;
         body.set_state(s);
     }
 }
 
 void FreeBodies::correct(double t, double dt, const Velocity& vel) {
     events_.clear();
+    coupling_change_ = 0.0;
     const double cv = settings_.virtual_mass;
     const Vec2 g = settings_.gravity;
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
         BodyLoads& out = loads_[f.index];
+        const BodyLoads last_pass = out;
+        out = BodyLoads{};
         out.gravity = f.inertia.mass * g;
         out.buoyancy = -f.fluid_mass * g;
+        const Vec2 free_translation = f.inertia.free_translation();
+        const bool turns = f.inertia.free(Dof::rotation);
+        const double reach = body.outline().reach();
 
-        const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
         BodyState s = f.start;
-        s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
-        s.acceleration = s.acceleration.cwiseProduct(f.inertia.free_translation());
-        s.angular_acceleration = f.inertia.free(Dof::rotation)
-                                     ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
-                                           (f.inertia.inertia + cv * f.fluid_inertia)
-                                     : 0.0;
-        f.acceleration = s.acceleration;
-        f.angular_acceleration = s.angular_acceleration;
+        double change = 0.0;  // of this pass against the last, in units of the net weight's acceleration
+        if (f.impact) {
+            // The held accelerations stand for the regular forces (m a* = F_regular + W); the rest of the wrench
+            // over the step is the water's impulse at the impact.
+            s.acceleration = f.held_acceleration;
+            s.angular_acceleration = f.held_angular_acceleration;
+            const Vec2 regular = f.inertia.mass * f.held_acceleration - (out.gravity + out.buoyancy);
+            out.water_impulse = ((hydrodynamic.force - regular) * dt).cwiseProduct(free_translation);
+            out.water_angular_impulse =
+                turns ? (hydrodynamic.torque - f.inertia.inertia * f.held_angular_acceleration) * dt : 0.0;
+            const double scale = std::max(out.water_impulse.norm(), f.inertia.mass * f.weight_acceleration * dt);
+            change = ((out.water_impulse - last_pass.water_impulse).norm() +
+                      std::abs(out.water_angular_impulse - last_pass.water_angular_impulse) / reach) /
+                     scale;
+        } else {
+            const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
+            s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
+            s.acceleration = s.acceleration.cwiseProduct(free_translation);
+            s.angular_acceleration = turns ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
+                                                 (f.inertia.inertia + cv * f.fluid_inertia)
+                                           : 0.0;
+            if (f.weight_acceleration > 0.0)
+                change = ((s.acceleration - f.acceleration).norm() +
+                          std::abs(s.angular_acceleration - f.angular_acceleration) * reach) /
+                         f.weight_acceleration;
+            f.acceleration = s.acceleration;
+            f.angular_acceleration = s.angular_acceleration;
+        }
+        coupling_change_ = std::max(coupling_change_, change);
         f.contact = f.contact_at_start;
-        // Contact force over the step: what the impacts (and a resting reaction) changed against free flight.
+        // Contact over the step: what the impacts (and a resting reaction) changed against free flight.
         const BodyState free_flight = drift(s, dt);
         const auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia,
                                            settings_.obstacles, settings_.contact);
-        out.contact = f.inertia.mass * (s.velocity - free_flight.velocity) / dt;
-        out.contact_torque = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity) / dt;
+        const Vec2 contact = f.inertia.mass * (s.velocity - free_flight.velocity);
+        const double contact_angular = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity);
+        if (f.impact) {
+            // The obstacle stops the water's share too: J_contact = m dv - J_water.
+            out.contact_impulse = contact - out.water_impulse;
+            out.contact_angular_impulse = contact_angular - out.water_angular_impulse;
+        } else {
+            out.contact = contact / dt;
+            out.contact_torque = contact_angular / dt;
+        }
         events_.insert(events_.end(), ev.begin(), ev.end());
         body.set_state(s);
     }
@@ -154,6 +201,7 @@ void FreeBodies::restore(const std::filesystem::path& checkpoint) {
         each_value([&](double& x) { x = (*values)[k++]; }, s, f.acceleration, f.angular_acceleration, f.contact,
                    old_layout ? legacy : nullptr);
         f.contact.touch.body = body.name();
+        f.started = true;
         if (f.contact.pressed_on >= 0) f.contact.touch.obstacle = settings_.obstacles[f.contact.pressed_on].name;
         body.set_state(s);
     }

@@ -27,6 +27,25 @@ std::vector<CaseKey> rigidbody_keys() {
          .default_value = "0.5",
          .min = at_least(0.0),
          .meaning = "C_a of the Beranger model (Turmel & Locat 2008: 0.5)."},
+
+        {.path = "numerics.coupling",
+         .type = K::section,
+         .meaning = "Strong coupling of free bodies and flow in the steps where a body's velocity changes at once "
+                    "against the fluid's (its first step, an impact): further forcing and projection passes, so "
+                    "that the fluid the body sets in motion (its added mass) moves within the step."},
+        {.path = "numerics.coupling.max_passes",
+         .type = K::integer,
+         .default_value = "20",
+         .min = at_least(1),
+         .max = at_most(200),
+         .meaning = "Most forcing and projection passes in one step; 1 is the explicit (weak) coupling."},
+        {.path = "numerics.coupling.tolerance",
+         .type = K::number,
+         .default_value = "0.01",
+         .min = above(0),
+         .meaning = "Such a step passes again while the last pass moved a free body's acceleration by more than "
+                    "this fraction of its net weight's acceleration |m - m_f| g / m, or an impact's water "
+                    "impulse by more than this fraction of itself."},
     };
 }
 
@@ -36,6 +55,13 @@ LumpedConfig read_lumped(const CaseReader& r) {
     LumpedConfig c;
     c.drag_coefficient = r.number("lumped.drag_coefficient");
     c.added_mass_coefficient = r.number("lumped.added_mass_coefficient");
+    return c;
+}
+
+CouplingConfig read_coupling(const CaseReader& r) {
+    CouplingConfig c;
+    c.max_passes = static_cast<int>(r.integer("numerics.coupling.max_passes"));
+    c.tolerance = r.number("numerics.coupling.tolerance");
     return c;
 }
 

@@ -25,6 +25,7 @@ struct CaseConfig : FlowConfig {
     IbmConfig ibm;                              // ibm/
     ContactConfig contact;                      // contact/
     LumpedConfig lumped;                        // rigidbody/
+    CouplingConfig coupling;                    // rigidbody/
     TurbulenceConfig turbulence;                // turbulence/
 
     // Outputs

@@ -83,10 +83,11 @@ std::vector<CaseKey> output_keys() {
 // The order of the key table in docs/case-file.md and of `chute keys` (the order the schema had as one table),
 // whichever module declares each key: a key goes with the longest entry its path is or starts with, and the
 // keys of one entry keep the order of their module's section.
-constexpr std::array<std::string_view, 17> kDocumentedOrder = {
-    "name",     "domain",       "fluid",   "gravity", "initial",    "boundaries",       "bodies",
-    "numerics", "numerics.ibm", "contact", "lumped",  "turbulence", "numerics.poisson", "numerics.divergence_limit",
-    "time",     "parallel",     "output"};
+constexpr std::array<std::string_view, 18> kDocumentedOrder = {
+    "name",       "domain",   "fluid",      "gravity",          "initial",
+    "boundaries", "bodies",   "numerics",   "numerics.ibm",     "numerics.coupling",
+    "contact",    "lumped",   "turbulence", "numerics.poisson", "numerics.divergence_limit",
+    "time",       "parallel", "output"};
 
 std::size_t documented_rank(std::string_view path) {
     std::size_t rank = kDocumentedOrder.size(), length = 0;
@@ -172,6 +173,7 @@ CaseConfig read_case(const CaseReader& r, const std::string& default_name) {
     c.ibm = read_ibm(r);
     c.contact = read_contact(r);
     c.lumped = read_lumped(r);
+    c.coupling = read_coupling(r);
     c.turbulence = read_turbulence(r);
     read_outputs(r, c);
     return c;

@@ -7,8 +7,8 @@ ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
 }
 
 FreeBodySettings free_body_settings(const CaseConfig& c) {
-    return {c.contact,          Vec2(c.gravity[0], c.gravity[1]),    c.density, c.depth,
-            c.ibm.virtual_mass, obstacles_of(c, c.bodies, c.contact)};
+    return {c.contact,  Vec2(c.gravity[0], c.gravity[1]),    c.density, c.depth, c.ibm.virtual_mass,
+            c.coupling, obstacles_of(c, c.bodies, c.contact)};
 }
 
 KEpsilonSettings k_epsilon_settings(const CaseConfig& c) {

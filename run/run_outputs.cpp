@@ -19,8 +19,14 @@ namespace chute {
 namespace {
 
 std::vector<std::string> timeseries_columns(const CaseConfig& c) {
-    std::vector<std::string> cols = {
-        "t", "step", "dt", "kinetic_energy", "max_divergence", "poisson_iterations", "poisson_residual"};
+    std::vector<std::string> cols = {"t",
+                                     "step",
+                                     "dt",
+                                     "kinetic_energy",
+                                     "max_divergence",
+                                     "poisson_iterations",
+                                     "poisson_residual",
+                                     "coupling_passes"};
     for (std::size_t k = 0; k < c.probes.size(); ++k)
         for (const char* q : {"u", "v", "p"}) cols.push_back("probe" + std::to_string(k) + "_" + q);
     return cols;
@@ -172,7 +178,8 @@ void RunOutputs::record(const StepStats& step, const FlowHealth& health, const s
                                health.kinetic_energy,
                                health.max_divergence,
                                static_cast<double>(step.poisson_iterations),
-                               step.poisson_residual};
+                               step.poisson_residual,
+                               static_cast<double>(step.coupling_passes)};
     if (probes_.size() > 0) {
         cell_centred_velocity(grid, flow.velocity(), uc_, vc_);
         halo_.exchange(uc_);

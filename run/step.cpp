@@ -1,5 +1,7 @@
 #include "step.hpp"
 
+#include <algorithm>
+
 namespace chute {
 
 StepStats take_step(Model& model, double dt, StageTimer* timer) {
@@ -20,8 +22,21 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         carrier.place(t + dt);
         carrier.impose(flow.predicted(), dt);
     }
-    const StepStats stats = flow.project();
+    StepStats stats = flow.project();
     {
+        StageTimer::Scope timed(timer, "bodies");
+        free_bodies.correct(t, dt, flow.velocity());
+    }
+    // Strong coupling: while the free bodies' accelerations still move, force u^{n+1} towards the corrected
+    // motion and project again. One pass sets only part of the fluid a suddenly accelerated body drives in
+    // motion (its added mass); the wrench of the last pass holds all of it.
+    while (free_bodies.another_pass(stats.coupling_passes)) {
+        {
+            StageTimer::Scope timed(timer, "bodies");
+            carrier.impose(flow.reopen(), dt);
+        }
+        stats.poisson_iterations = std::max(stats.poisson_iterations, flow.reproject().poisson_iterations);
+        ++stats.coupling_passes;
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.correct(t, dt, flow.velocity());
     }
@@ -37,7 +52,14 @@ std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer) {
     const std::optional<WallTurbulence> turbulence = model.wall_turbulence();
     std::vector<BodyForces> forces =
         model.carrier().measure(model.flow().velocity(), model.flow().pressure(), turbulence ? &*turbulence : nullptr);
-    for (std::size_t b = 0; b < forces.size(); ++b) forces[b].loads = model.free_bodies().loads(b);
+    const double dt = model.flow().previous_dt();
+    for (std::size_t b = 0; b < forces.size(); ++b) {
+        BodyForces& f = forces[b];
+        f.loads = model.free_bodies().loads(b);
+        // An impact's water impulse is recorded as the impulse it is, not inside the step's force.
+        f.forcing -= f.loads.water_impulse / dt;
+        f.forcing_torque -= f.loads.water_angular_impulse / dt;
+    }
     return forces;
 }
 

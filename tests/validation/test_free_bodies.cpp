@@ -1,6 +1,7 @@
 // Free bodies in fluid: the rigid-body update coupled to the direct forcing (rigidbody/fluid_body_coupling).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -70,6 +71,43 @@ TEST(FreeBodies, LightDiscRisesWithItsAddedMass) {
     EXPECT_NEAR(a_mean, a_coupled, 0.03 * a_coupled);
     EXPECT_NEAR(a_mean, a_potential, 0.12 * a_potential);
     EXPECT_LT(std::abs(s.velocity.x()), 1e-3 * s.velocity.y());  // straight up (markers are not mirror-exact)
+}
+
+// The start of the study's free fall (0.3 m square block, 2500 kg/m^3, released from rest in water at rest;
+// examples/free_fall_block at 40 cells across, in a 3 m x 3.5 m box). Before any drag, potential flow gives the
+// block's first acceleration from buoyancy and added mass: a_0 = (rho_s - rho_f) g / (rho_s + C_a rho_f) = 3.990
+// m/s^2 with the square's C_a = 1.1885 (Sedov 1965; DNV-RP-H103 table A-1; VALIDATION.md), the box's 10 %
+// blockage adding a little. Held to 3 % (the forces issue's). The first step is 0.04 s long (the free body's
+// step limit from the estimate 4.2 m/s^2 of the virtual-mass form): with a single forcing and projection the
+// fluid around the block takes up only about half of its added mass in that step and the block read 4.72
+// m/s^2, the force then overshooting to 2.3 times the added-mass force at t = 0.085 s (docs/validation.md).
+// No spike: over the first 0.05 s (5 steps) the force stays below 1.2 C_a m_f a_0, the added-mass reaction
+// plus a drag below 20 N (0.5 rho C_D L v^2 with C_D 2 at v < 0.25 m/s) and the corner vortices' start (C_a
+// reads 1.21 at t = 0.1 s on the accelerated square, docs/validation.md). Later the block starts crossing
+// cells, and the volume forcing's faces switching on jolt the force (+15 % at t = 0.051 and 0.089 s): the
+// cell-crossing ripple, a defect of its own (docs/validation.md, "Cell-crossing ripple").
+TEST(FreeBodies, StudyBlockStartsWithItsPotentialFlowAcceleration) {
+    const CaseConfig c = load_case(kExamples + "free_fall_block/case.yaml",
+                                   {"domain.x={start: -1.5, end: 1.5, cells: 400}",
+                                    "domain.y={start: -2.5, end: 1.0, cells: 467}", "time.end=0.1"});
+    BodyRun run(c, MPI_COMM_WORLD);
+    run.step();
+    const double a_first = -run.ibm.bodies()[0].state().acceleration.y();
+    const double first_dt = run.solver.time();
+    run.run_to(0.1);
+    const double m_f = 1000.0 * 0.3 * 0.3, m_s = 2.5 * m_f, ca = 1.1885;
+    const double a_potential = (m_s - m_f) * 9.81 / (m_s + ca * m_f);
+    double peak = 0.0;
+    for (const ForceSample& h : run.history)
+        if (h.t <= 0.05) peak = std::max(peak, h.f.forcing.y());
+    if (root())
+        std::printf(
+            "study block start: first step %.4f s, acceleration %.4f m/s^2 (potential flow %.4f, %+.2f %%); "
+            "largest force over 0.05 s %.1f N = %.3f C_a m_f a_0\n",
+            first_dt, a_first, a_potential, 100.0 * (a_first / a_potential - 1.0), peak,
+            peak / (ca * m_f * a_potential));
+    EXPECT_NEAR(a_first, a_potential, 0.03 * a_potential);
+    EXPECT_LT(peak, 1.2 * ca * m_f * a_potential);
 }
 
 // Glowinski et al. (2001, J. Comput. Phys. 169:363, sec. 5.1), reproduced by Wan & Turek (2006, Int. J.

@@ -50,6 +50,7 @@ chute_validation(oscillating_cylinder_dutsch BluffBodies.OscillatingCylinderDuts
 chute_validation(free_neutral_disc_at_rest FreeBodies.NeutrallyBuoyantDiscStaysAtRest 2 "validation")
 chute_validation(free_light_disc_rises FreeBodies.LightDiscRisesWithItsAddedMass 2 "validation")
 chute_validation(settling_disc_glowinski FreeBodies.SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber 2 "validation")
+chute_validation(free_block_start FreeBodies.StudyBlockStartsWithItsPotentialFlowAcceleration 2 "validation")
 chute_validation(free_body_start_inside_obstacle FreeBodies.StartInsideAnObstacleIsAnError 1 "validation")
 
 # Turbulence
