@@ -27,9 +27,9 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.correct(t, dt, flow.velocity());
     }
-    // Strong coupling: while the free bodies' accelerations still move, force u^{n+1} towards the corrected
-    // motion and project again. One pass sets only part of the fluid a suddenly accelerated body drives in
-    // motion (its added mass); the wrench of the last pass holds all of it.
+    // Strong coupling where a free body's velocity changes at once (its first step, an impact): while its update
+    // still moves, force u^{n+1} towards the corrected motion and project again. One pass sets only part of the
+    // fluid the body drives in motion (its added mass); the passes complete it (rigidbody/free_bodies.hpp).
     while (free_bodies.another_pass(stats.coupling_passes)) {
         {
             StageTimer::Scope timed(timer, "bodies");
