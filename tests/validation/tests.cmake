@@ -41,6 +41,8 @@ chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnInclinedPlane 2 "validation")
+chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow")
+chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAtTerminalSpeed 2 "validation;slow")
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
