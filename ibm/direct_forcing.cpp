@@ -100,7 +100,7 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
             double& value = f.is_u ? star.u(f.i, f.j) : star.v(f.i, f.j);
             const double target = f.is_u ? U.x() : U.y();
             const double rate = f.share * (target - value) * f.volume / dt;
-            value += f.share * (target - value);
+            value = f.share == 1.0 ? target : value + f.share * (target - value);  // exact where fully forced
             const Vec2 m = f.is_u ? Vec2(rate, 0.0) : Vec2(0.0, rate);
             sums[0] += m.x();
             sums[1] += m.y();
