@@ -61,7 +61,7 @@ void DirectForcing::find_interior_faces() {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         if (!body.outline().closed()) continue;
-        const double depth = (kernel_support(config_.kernel) + config_.retraction) * cell_size_[b];
+        const double h = cell_size_[b];
         // Owned faces in the body's bounding box only.
         const double reach = body.outline().reach();
         const Vec2 c = body.state().centre;
@@ -73,14 +73,20 @@ void DirectForcing::find_interior_faces() {
         };
         const auto [i0, i1] = range(X, nx, c.x() - reach, c.x() + reach);
         const auto [j0, j1] = range(Y, ny, c.y() - reach, c.y() + reach);
-        auto inside = [&](const Vec2& p) {
-            return body.outline().signed_distance(rotated(p - c, -body.state().angle)) < -depth;
+        // a(d), d the depth below the surface in cells: a ramp of volume_ramp cells (a whole number, so that its
+        // lattice sum does not depend on where the body sits against the grid) centred on the depth the kernel
+        // reaches from the markers (support + retraction): on average sum a V is the volume beyond that depth.
+        const double middle = kernel_support(config_.kernel) + config_.retraction, ramp = config_.volume_ramp;
+        auto share = [&](const Vec2& p) {
+            const double d = -body.outline().signed_distance(rotated(p - c, -body.state().angle)) / h;
+            if (ramp == 0.0) return d > middle ? 1.0 : 0.0;
+            return std::clamp(0.5 + (d - middle) / ramp, 0.0, 1.0);
         };
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
                 const Vec2 pu(X.f(i), Y.c(j)), pv(X.c(i), Y.f(j));
-                if (inside(pu)) interior_[b].push_back({i, j, true, X.dc(i) * Y.w(j), pu});
-                if (inside(pv)) interior_[b].push_back({i, j, false, X.w(i) * Y.dc(j), pv});
+                if (const double a = share(pu); a > 0.0) interior_[b].push_back({i, j, true, X.dc(i) * Y.w(j), pu, a});
+                if (const double a = share(pv); a > 0.0) interior_[b].push_back({i, j, false, X.w(i) * Y.dc(j), pv, a});
             }
     }
 }
@@ -93,8 +99,8 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
             const Vec2 U = bodies_[b].velocity_at(f.position);
             double& value = f.is_u ? star.u(f.i, f.j) : star.v(f.i, f.j);
             const double target = f.is_u ? U.x() : U.y();
-            const double rate = (target - value) * f.volume / dt;
-            value = target;
+            const double rate = f.share * (target - value) * f.volume / dt;
+            value = f.share == 1.0 ? target : value + f.share * (target - value);  // exact where fully forced
             const Vec2 m = f.is_u ? Vec2(rate, 0.0) : Vec2(0.0, rate);
             sums[0] += m.x();
             sums[1] += m.y();
@@ -102,6 +108,7 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
         }
         if (grid_.size() > 1) MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, grid_.comm());
         result_[b].momentum_rate += Vec2(sums[0], sums[1]);
+        result_[b].interior_rate = Vec2(sums[0], sums[1]);
         result_[b].torque_rate += sums[2];
     }
 }

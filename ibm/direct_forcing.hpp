@@ -8,16 +8,22 @@
 //     u* += dt S[F_l dV_l]                  spread back; dV_l = marker length x local grid spacing
 //   the pressure projection follows (FlowSolver::project).
 //
-// Before that, the fluid deeper inside a closed body than the kernel reaches (signed distance below
-// -(kernel support + retraction) h) is set to the rigid-body velocity: a volume forcing that accelerates the
-// enclosed fluid with the body within the step. Without it the enclosed fluid is accelerated only through
-// the pressure of earlier steps, and the response of an accelerating body lags by tens of steps (the added
-// mass of a square accelerated from rest came out ~60 % low after 10 steps; docs/validation.md).
+// Before that, the fluid inside a closed body is forced towards the rigid-body velocity: a volume forcing that
+// accelerates the enclosed fluid with the body within the step. Without it the enclosed fluid is accelerated
+// only through the pressure of earlier steps, and the response of an accelerating body lags by tens of steps
+// (the added mass of a square accelerated from rest came out ~60 % low after 10 steps; docs/validation.md).
+// Each face is moved the share a(d) of the way to the body velocity, u* += a (U_body - u*), d its depth below
+// the surface. By default a = 1 deeper than the kernel reaches from the markers, (support + retraction) h, and
+// 0 above. On a body moving across the grid that switch gains and loses whole rows of faces, the front and
+// the back at different moments, and it carries most of the force ripple at the cell-crossing frequency
+// (Lee et al. 2011, JCP 230:2677; docs/validation.md, "Cell-crossing ripple"). `volume_ramp` (cells) makes a
+// rise linearly across that depth instead: the lattice sum of a linear ramp of whole-cell width is the same
+// at every offset of the body against the grid, so faces are switched on and off gradually.
 //
 // The body is at its place at t^{n+1} when the forcing is applied. Each iteration shrinks the slip error
 // |U_l - U_body| left by the overlap of neighbouring kernels; the error after the last iteration is reported.
 // Momentum given to the fluid per unit density and depth per unit time: sum_l F_l dV_l (summed over the
-// iterations) plus the volume forcing's sum over faces of (U_body - u*) V / dt.
+// iterations) plus the volume forcing's sum over faces of a (U_body - u*) V / dt.
 #include <vector>
 
 #include "body.hpp"
@@ -28,6 +34,7 @@ namespace chute {
 struct BodyForcing {
     Vec2 momentum_rate = Vec2::Zero();  // sum_l F_l dV_l: force on the fluid / (rho depth)  (m^3/s^2)
     double torque_rate = 0.0;           // sum_l (X_l - x_c) x F_l dV_l about the body centre  (m^4/s^2)
+    Vec2 interior_rate = Vec2::Zero();  // the volume forcing's part of momentum_rate (m^3/s^2)
     double max_slip = 0.0;              // max_l |U_l - U_body(X_l)| after forcing (m/s)
     double rms_slip = 0.0;
 };
@@ -47,7 +54,7 @@ public:
 private:
     void place_markers();
     void find_interior_faces();
-    // Sets u* to the body velocity on the interior faces; adds the momentum it took to the body's forcing.
+    // Moves u* on the interior faces towards the body velocity; adds the momentum it took to the body's forcing.
     void force_interior(Velocity& star, double dt);
 
     const Grid& grid_;
@@ -64,6 +71,7 @@ private:
         bool is_u;      // u face or v face
         double volume;  // its control volume (per unit depth)
         Vec2 position;
+        double share;  // a(d): the share of the way to the body velocity it is moved, (0, 1]
     };
     std::vector<std::vector<InteriorFace>> interior_;  // per body
     bool placed_ = false;

@@ -41,6 +41,10 @@ chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnInclinedPlane 2 "validation")
+# Known failures, kept as the record of issue 15's targets (docs/validation.md, Cell-crossing ripple): the
+# moving body's force ripples 7.4 % at the cell-crossing frequency (target < 1 %).
+chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow;known_failure")
+chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAtTerminalSpeed 2 "validation;slow;known_failure")
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
