@@ -23,7 +23,7 @@ double min_spacing_along(const Grid& grid, const Body& body) {
 }
 
 DirectForcing::DirectForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies)
-    : grid_(grid), config_(config), bodies_(bodies), result_(bodies.size()) {
+    : grid_(grid), config_(config), bodies_(bodies), result_(bodies.size()), followed_(bodies.size()) {
     ranges_.push_back(0);
     for (const Body& body : bodies_) {
         const double h = min_spacing_along(grid_, body);
@@ -74,13 +74,14 @@ void DirectForcing::find_interior_faces() {
         const auto [i0, i1] = range(X, nx, c.x() - reach, c.x() + reach);
         const auto [j0, j1] = range(Y, ny, c.y() - reach, c.y() + reach);
         // a(d), d the depth below the surface in cells: a ramp of volume_ramp cells (a whole number, so that its
-        // lattice sum does not depend on where the body sits against the grid) centred on the depth the kernel
-        // reaches from the markers (support + retraction): on average sum a V is the volume beyond that depth.
-        const double middle = kernel_support(config_.kernel) + config_.retraction, ramp = config_.volume_ramp;
+        // lattice sum does not depend on where the body sits against the grid) from the depth the kernel reaches
+        // from the markers (support + retraction), so that it does not force the fluid the markers force. A ramp
+        // centred there raised the accelerated square's added mass by 10 % (docs/validation.md).
+        const double start = kernel_support(config_.kernel) + config_.retraction, ramp = config_.volume_ramp;
         auto share = [&](const Vec2& p) {
             const double d = -body.outline().signed_distance(rotated(p - c, -body.state().angle)) / h;
-            if (ramp == 0.0) return d > middle ? 1.0 : 0.0;
-            return std::clamp(0.5 + (d - middle) / ramp, 0.0, 1.0);
+            if (ramp == 0.0) return d > start ? 1.0 : 0.0;
+            return std::clamp((d - start) / ramp, 0.0, 1.0);
         };
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
@@ -95,12 +96,26 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         double sums[3] = {0.0, 0.0, 0.0};  // momentum rate x, y and torque rate of this rank's faces
         const Vec2 c = bodies_[b].state().centre;
+        // The body's acceleration not yet followed in this step (a further pass of a strongly coupled step
+        // starts from a field that already moved with the last pass's).
+        const BodyState& st = bodies_[b].state();
+        const Vec2 accel = st.acceleration - followed_[b].acceleration;
+        const double angular_accel = st.angular_acceleration - followed_[b].angular_acceleration;
+        followed_[b].acceleration = st.acceleration;
+        followed_[b].angular_acceleration = st.angular_acceleration;
         for (const InteriorFace& f : interior_[b]) {
             const Vec2 U = bodies_[b].velocity_at(f.position);
             double& value = f.is_u ? star.u(f.i, f.j) : star.v(f.i, f.j);
             const double target = f.is_u ? U.x() : U.y();
-            const double rate = f.share * (target - value) * f.volume / dt;
-            value = f.share == 1.0 ? target : value + f.share * (target - value);  // exact where fully forced
+            // A partly forced face follows the body's acceleration in full and keeps (1 - share) of its own
+            // dynamics (pressure gradient, advection): the enclosed fluid stays rigid against an accelerating
+            // body while the forced volume grows and shrinks smoothly as the body crosses cells.
+            const Vec2 dU = dt * (accel + angular_accel * perp(f.position - c));
+            const double follow = f.is_u ? dU.x() : dU.y();
+            const double change =
+                f.share == 1.0 ? target - value : f.share * (target - value) + (1.0 - f.share) * follow;
+            const double rate = change * f.volume / dt;
+            value = f.share == 1.0 ? target : value + change;  // exact where fully forced
             const Vec2 m = f.is_u ? Vec2(rate, 0.0) : Vec2(0.0, rate);
             sums[0] += m.x();
             sums[1] += m.y();
@@ -111,6 +126,10 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
         result_[b].interior_rate = Vec2(sums[0], sums[1]);
         result_[b].torque_rate += sums[2];
     }
+}
+
+void DirectForcing::begin_step() {
+    for (BodyState& f : followed_) f = BodyState{};
 }
 
 void DirectForcing::apply(Velocity& star, double dt) {

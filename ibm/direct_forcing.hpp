@@ -12,18 +12,21 @@
 // accelerates the enclosed fluid with the body within the step. Without it the enclosed fluid is accelerated
 // only through the pressure of earlier steps, and the response of an accelerating body lags by tens of steps
 // (the added mass of a square accelerated from rest came out ~60 % low after 10 steps; docs/validation.md).
-// Each face is moved the share a(d) of the way to the body velocity, u* += a (U_body - u*), d its depth below
-// the surface. By default a = 1 deeper than the kernel reaches from the markers, (support + retraction) h, and
-// 0 above. On a body moving across the grid that switch gains and loses whole rows of faces, the front and
-// the back at different moments, and it carries most of the force ripple at the cell-crossing frequency
-// (Lee et al. 2011, JCP 230:2677; docs/validation.md, "Cell-crossing ripple"). `volume_ramp` (cells) makes a
-// rise linearly across that depth instead: the lattice sum of a linear ramp of whole-cell width is the same
-// at every offset of the body against the grid, so faces are switched on and off gradually.
+// A face d below the surface is forced with the share a(d): u* += a (U_body - u*) + (1 - a) dU_body, dU_body
+// the body's change of velocity over the step there (dt times its acceleration, less what an earlier pass of
+// the step followed). a rises linearly from 0 where the kernel stops reaching from the markers,
+// (support + retraction) h, to 1 `volume_ramp` cells deeper (default 2; 0: a switch there). A switch gains
+// and loses whole rows of faces as the body crosses the grid, the front and the back at different moments,
+// and carried most of the force ripple at the cell-crossing frequency (Lee et al. 2011, JCP 230:2677;
+// docs/validation.md, "Cell-crossing ripple": 5.1 % of the falling block's force, 1.4 % with the ramp). The
+// lattice sum of a linear ramp of whole-cell width is the same at every offset of the body against the grid;
+// a partly forced face still follows the body's acceleration in full, so the enclosed fluid stays rigid
+// against an accelerating body (without that, the accelerated square's added mass rose by 10 %).
 //
 // The body is at its place at t^{n+1} when the forcing is applied. Each iteration shrinks the slip error
 // |U_l - U_body| left by the overlap of neighbouring kernels; the error after the last iteration is reported.
 // Momentum given to the fluid per unit density and depth per unit time: sum_l F_l dV_l (summed over the
-// iterations) plus the volume forcing's sum over faces of a (U_body - u*) V / dt.
+// iterations) plus the volume forcing's sum over faces of its change of u* times V / dt.
 #include <vector>
 
 #include "body.hpp"
@@ -43,6 +46,8 @@ class DirectForcing {
 public:
     DirectForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies);
 
+    // A new step: the volume forcing follows the bodies' accelerations from zero again.
+    void begin_step();
     // Force u* (owned faces) towards the bodies' velocities at their present place.
     void apply(Velocity& star, double dt);
     const std::vector<BodyForcing>& forcing() const { return result_; }
@@ -76,6 +81,7 @@ private:
     std::vector<std::vector<InteriorFace>> interior_;  // per body
     bool placed_ = false;
     std::vector<BodyForcing> result_;
+    std::vector<BodyState> followed_;  // the accelerations the volume forcing followed so far in this step
 };
 
 // The smallest grid spacing met along a body's outline (markers are spaced relative to it).

@@ -14,7 +14,7 @@ struct IbmConfig {
     int forcing_iterations = 3;                     // multi-direct forcing (Breugem 2012)
     double marker_spacing = 1.0;                    // in grid cells
     double retraction = 0.3;                        // markers moved inwards by this many cells
-    int volume_ramp = 0;                            // cells over which the volume forcing fades in (0: a switch)
+    int volume_ramp = 2;                            // cells over which the volume forcing fades in (0: a switch)
     std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
     double virtual_mass = 1.0;                      // C_V of the free-body update (Schwarz et al. 2015)
 };

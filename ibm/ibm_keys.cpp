@@ -39,14 +39,14 @@ std::vector<CaseKey> ibm_keys() {
              "drag in the published band at 40 cells per diameter (docs/validation.md)."},
         {.path = "numerics.ibm.volume_ramp",
          .type = K::integer,
-         .default_value = "0",
+         .default_value = "2",
          .min = at_least(0),
          .max = at_most(4),
          .meaning = "Width, in cells, of the ramp over which the volume forcing of the fluid inside a closed body "
-                    "fades in, centred where the markers' kernel stops reaching. 0: every face beyond that depth "
-                    "is forced fully. 2 cuts the force ripple of a body moving across the grid (5 % to 1 % on "
-                    "the falling block) but raises the early added mass of an accelerated square by 9 % "
-                    "(docs/validation.md, Cell-crossing ripple)."},
+                    "fades in, from where the markers' kernel stops reaching; a partly forced face follows the "
+                    "body's acceleration in full. 0: every face beyond that depth is forced fully, a switch that "
+                    "makes the force of a body moving across the grid ripple (5 % on the falling block; 1.4 % "
+                    "with 2; docs/validation.md, Cell-crossing ripple)."},
         {.path = "numerics.ibm.stress_probes",
          .type = K::vector2,
          .default_value = "[1.5, 2.5]",

@@ -18,6 +18,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 
 void ImmersedBoundary::begin_step(const Velocity& start) {
     for (BodyForcing& f : step_forcing_) f = BodyForcing{};
+    forcing_->begin_step();
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
 }
