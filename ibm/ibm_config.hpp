@@ -11,15 +11,15 @@ enum class DeltaKernel { roma3, peskin4 };
 
 struct IbmConfig {
     DeltaKernel kernel = DeltaKernel::roma3;
-    int forcing_iterations = 3;                     // multi-direct forcing (Breugem 2012)
-    double marker_spacing = 1.0;                    // in grid cells
-    double retraction = 0.3;                        // markers moved inwards by this many cells
-    int volume_ramp = 2;                            // cells over which the volume forcing fades in (0: a switch)
-    std::array<double, 2> stress_probes{1.5, 2.5};  // probe distances along the normal, in cells
-    double virtual_mass = 1.0;                      // C_V of the free-body update (Schwarz et al. 2015)
+    int forcing_iterations = 3;                        // multi-direct forcing (Breugem 2012)
+    double marker_spacing = 1.0;                       // in grid cells
+    double retraction = 0.3;                           // markers moved inwards by this many cells
+    int volume_ramp = 2;                               // cells over which the volume forcing fades in (0: a switch)
+    std::vector<double> stress_probes{2.5, 3.5, 4.5};  // probe distances along the normal, in cells
+    double virtual_mass = 1.0;                         // C_V of the free-body update (Schwarz et al. 2015)
 };
 
-// The schema's numerics.ibm section (io/case_reader.hpp) and its reading (the second probe beyond the first).
+// The schema's numerics.ibm section (io/case_reader.hpp) and its reading (2 to 6 probes, each beyond the one before).
 struct CaseKey;
 class CaseReader;
 std::vector<CaseKey> ibm_keys();
