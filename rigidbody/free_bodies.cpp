@@ -177,6 +177,7 @@ std::vector<CheckpointArray> FreeBodies::checkpoint_arrays() const {
         CheckpointArray a{"free_body_" + bodies_[f.index].name(), {}};
         each_value([&](double& x) { a.values.push_back(x); }, s, copy.acceleration, copy.angular_acceleration,
                    copy.contact);
+        a.values.push_back(f.after_impact ? 1.0 : 0.0);  // the next step is coupled strongly
         out.push_back(std::move(a));
     }
     return out;
@@ -193,13 +194,16 @@ void FreeBodies::restore(const std::filesystem::path& checkpoint) {
         double legacy[4];
         std::size_t k = 0, count = 0;
         each_value([&](double&) { ++count; }, s, f.acceleration, f.angular_acceleration, f.contact);
+        // Then the after-impact flag (checkpoints written before the coupling passes end without it).
         const bool old_layout = values->size() == count + 4;
-        if (values->size() != count && !old_layout)
+        const bool with_flag = values->size() == count + 1;
+        if (values->size() != count && !old_layout && !with_flag)
             throw std::runtime_error("checkpoint '" + checkpoint.string() + "': the state of free body `" +
                                      body.name() + "` has " + std::to_string(values->size()) + " values, expected " +
-                                     std::to_string(count));
+                                     std::to_string(count + 1));
         each_value([&](double& x) { x = (*values)[k++]; }, s, f.acceleration, f.angular_acceleration, f.contact,
                    old_layout ? legacy : nullptr);
+        f.after_impact = with_flag && values->back() != 0.0;
         f.contact.touch.body = body.name();
         f.started = true;
         if (f.contact.pressed_on >= 0) f.contact.touch.obstacle = settings_.obstacles[f.contact.pressed_on].name;
