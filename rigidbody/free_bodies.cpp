@@ -51,23 +51,17 @@ double FreeBodies::max_dt(double cfl) const {
 }
 
 void FreeBodies::predict(double t, double dt) {
-    impulsive_ = false;
+    first_step_ = false;
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         f.start = body.state();
         f.contact_at_start = f.contact;
-        f.held_acceleration = f.acceleration;
-        f.held_angular_acceleration = f.angular_acceleration;
         BodyState s = f.start;
         s.acceleration = f.acceleration;
         s.angular_acceleration = f.angular_acceleration;
         ContactState c = f.contact;
-        const auto events = move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles,
-                                               settings_.contact);
-        f.impact = settings_.contact.law != ReboundLaw::soft && !events.empty();
-        // The step after an impact too: its held accelerations are those from before the impact.
-        impulsive_ = impulsive_ || f.impact || f.after_impact || !f.started;
-        f.after_impact = f.impact;
+        move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles, settings_.contact);
+        first_step_ = first_step_ || !f.started;
         f.started = true;
         body.set_state(s);
     }
@@ -82,59 +76,31 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
         BodyLoads& out = loads_[f.index];
-        const BodyLoads last_pass = out;
-        out = BodyLoads{};
         out.gravity = f.inertia.mass * g;
         out.buoyancy = -f.fluid_mass * g;
-        const Vec2 free_translation = f.inertia.free_translation();
-        const bool turns = f.inertia.free(Dof::rotation);
-        const double reach = body.outline().reach();
 
+        const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
         BodyState s = f.start;
-        double change = 0.0;  // of this pass against the last, in units of the net weight's acceleration
-        if (f.impact) {
-            // The held accelerations stand for the regular forces (m a* = F_regular + W); the rest of the wrench
-            // over the step is the water's impulse at the impact.
-            s.acceleration = f.held_acceleration;
-            s.angular_acceleration = f.held_angular_acceleration;
-            const Vec2 regular = f.inertia.mass * f.held_acceleration - (out.gravity + out.buoyancy);
-            out.water_impulse = ((hydrodynamic.force - regular) * dt).cwiseProduct(free_translation);
-            out.water_angular_impulse =
-                turns ? (hydrodynamic.torque - f.inertia.inertia * f.held_angular_acceleration) * dt : 0.0;
-            const double scale = std::max(out.water_impulse.norm(), f.inertia.mass * f.weight_acceleration * dt);
-            change = ((out.water_impulse - last_pass.water_impulse).norm() +
-                      std::abs(out.water_angular_impulse - last_pass.water_angular_impulse) / reach) /
-                     scale;
-        } else {
-            const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
-            s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
-            s.acceleration = s.acceleration.cwiseProduct(free_translation);
-            s.angular_acceleration = turns ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
-                                                 (f.inertia.inertia + cv * f.fluid_inertia)
-                                           : 0.0;
-            if (f.weight_acceleration > 0.0)
-                change = ((s.acceleration - f.acceleration).norm() +
-                          std::abs(s.angular_acceleration - f.angular_acceleration) * reach) /
-                         f.weight_acceleration;
-            f.acceleration = s.acceleration;
-            f.angular_acceleration = s.angular_acceleration;
+        s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
+        s.acceleration = s.acceleration.cwiseProduct(f.inertia.free_translation());
+        s.angular_acceleration = f.inertia.free(Dof::rotation)
+                                     ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
+                                           (f.inertia.inertia + cv * f.fluid_inertia)
+                                     : 0.0;
+        if (f.weight_acceleration > 0.0) {
+            const double change = (s.acceleration - f.acceleration).norm() +
+                                  std::abs(s.angular_acceleration - f.angular_acceleration) * body.outline().reach();
+            coupling_change_ = std::max(coupling_change_, change / f.weight_acceleration);
         }
-        coupling_change_ = std::max(coupling_change_, change);
+        f.acceleration = s.acceleration;
+        f.angular_acceleration = s.angular_acceleration;
         f.contact = f.contact_at_start;
-        // Contact over the step: what the impacts (and a resting reaction) changed against free flight.
+        // Contact force over the step: what the impacts (and a resting reaction) changed against free flight.
         const BodyState free_flight = drift(s, dt);
         const auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia,
                                            settings_.obstacles, settings_.contact);
-        const Vec2 contact = f.inertia.mass * (s.velocity - free_flight.velocity);
-        const double contact_angular = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity);
-        if (f.impact) {
-            // The obstacle stops the water's share too: J_contact = m dv - J_water.
-            out.contact_impulse = contact - out.water_impulse;
-            out.contact_angular_impulse = contact_angular - out.water_angular_impulse;
-        } else {
-            out.contact = contact / dt;
-            out.contact_torque = contact_angular / dt;
-        }
+        out.contact = f.inertia.mass * (s.velocity - free_flight.velocity) / dt;
+        out.contact_torque = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity) / dt;
         events_.insert(events_.end(), ev.begin(), ev.end());
         body.set_state(s);
     }
@@ -177,7 +143,6 @@ std::vector<CheckpointArray> FreeBodies::checkpoint_arrays() const {
         CheckpointArray a{"free_body_" + bodies_[f.index].name(), {}};
         each_value([&](double& x) { a.values.push_back(x); }, s, copy.acceleration, copy.angular_acceleration,
                    copy.contact);
-        a.values.push_back(f.after_impact ? 1.0 : 0.0);  // the next step is coupled strongly
         out.push_back(std::move(a));
     }
     return out;
@@ -194,16 +159,15 @@ void FreeBodies::restore(const std::filesystem::path& checkpoint) {
         double legacy[4];
         std::size_t k = 0, count = 0;
         each_value([&](double&) { ++count; }, s, f.acceleration, f.angular_acceleration, f.contact);
-        // Then the after-impact flag (checkpoints written before the coupling passes end without it).
+        // Checkpoints of main e83f037-f3b74f5 end with an after-impact flag, no longer used.
         const bool old_layout = values->size() == count + 4;
         const bool with_flag = values->size() == count + 1;
         if (values->size() != count && !old_layout && !with_flag)
             throw std::runtime_error("checkpoint '" + checkpoint.string() + "': the state of free body `" +
                                      body.name() + "` has " + std::to_string(values->size()) + " values, expected " +
-                                     std::to_string(count + 1));
+                                     std::to_string(count));
         each_value([&](double& x) { x = (*values)[k++]; }, s, f.acceleration, f.angular_acceleration, f.contact,
                    old_layout ? legacy : nullptr);
-        f.after_impact = with_flag && values->back() != 0.0;
         f.contact.touch.body = body.name();
         f.started = true;
         if (f.contact.pressed_on >= 0) f.contact.touch.obstacle = settings_.obstacles[f.contact.pressed_on].name;

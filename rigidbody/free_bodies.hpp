@@ -11,15 +11,8 @@
 //                   Kempe & Froehlich 2015, JCP 281:591), which keeps light bodies stable:
 //                     (m + C_V m_f) a = F_h + (m - m_f) g + C_V m_f a*,   a* the predicted acceleration,
 //                   and the motion over the step with a held, impacts located inside it (contact/).
-//   another_pass()  strong coupling: the step forces and projects again while the update still moves
-//                   (numerics.coupling), and correct() runs again from the same start.
-// An impact (impulse or lumped law) reverses the body's velocity at one instant, and the water moving with it
-// (its added mass) must reverse too: the collision is between the obstacle and the body with the water it
-// carries (the effective mass m + m_a of wet-collision models, Legendre et al. 2006, Phys. Fluids 18:097102).
-// The rebound law sets the body's velocity; the passes let the fluid follow within the step, and what the
-// wrench then holds beyond the regular force (the one the held accelerations stand for) is the water's impulse
-// at the impact, J_w ~ -m_a dv, which the obstacle supplies as well. So over a step with an impact the body
-// keeps its held accelerations, and both impulses are recorded as impulses (BodyLoads), the same for any dt.
+//   another_pass()  strong coupling in a free body's first step: the step forces and projects again while
+//                   the update still moves (numerics.coupling), and correct() runs again from the same start.
 // The pressure is dynamic, so buoyancy -m_f g is added explicitly (m_f = rho_f V).
 #include <filesystem>
 #include <vector>
@@ -54,19 +47,17 @@ public:
     void predict(double t, double dt);
     // `vel` is u^{n+1}, from which the carrier measures the hydrodynamic wrench.
     void correct(double t, double dt, const Velocity& vel);
-    // Strong coupling in the steps where a free body's velocity changes at once against the fluid's: its first
-    // step (released in fluid at rest, with only an estimate of its acceleration), a step with an impact and
-    // the step after it (predicted with the accelerations from before the impact).
-    // There a single forcing and projection sets only part of the fluid the body drives in motion (about half
-    // of its added mass, docs/validation.md), so the step forces and projects again, and correct() runs again
-    // from the same start, while the last pass moved the update by more than numerics.coupling.tolerance:
-    // the acceleration by that fraction of the net weight's, (m - m_f) |g| / m, or an impact's water impulse
-    // by that fraction of itself. Elsewhere the flow of the last step already moves with the body, and a pass
-    // would only chase the step-to-step noise of the force.
+    // Strong coupling in a free body's first step: released in fluid at rest, with only an estimate of its
+    // acceleration, a single forcing and projection sets only about half of the fluid it drives in motion (its
+    // added mass, docs/validation.md), so the step forces and projects again, and correct() runs again from
+    // the same start, while the last pass moved the acceleration by more than numerics.coupling.tolerance of
+    // the net weight's, (m - m_f) |g| / m. Elsewhere the flow of the last step already moves with the body,
+    // and a pass would only chase the step-to-step noise of the force. (Impacts were tried too:
+    // docs/validation.md says why they are not coupled this way.)
     double coupling_change() const { return coupling_change_; }
     // Whether a step that has made `passes` passes makes another.
     bool another_pass(int passes) const {
-        return impulsive_ && passes < settings_.coupling.max_passes && coupling_change_ > settings_.coupling.tolerance;
+        return first_step_ && passes < settings_.coupling.max_passes && coupling_change_ > settings_.coupling.tolerance;
     }
     // Gravity, buoyancy and contact on body b over the last step (zero for bodies that are not free).
     const BodyLoads& loads(std::size_t b) const { return loads_[b]; }
@@ -89,11 +80,7 @@ private:
         Vec2 acceleration = Vec2::Zero();              // of the last update: the next prediction
         double angular_acceleration = 0.0;
         ContactState contact, contact_at_start;
-        bool impact = false;                    // the step's motion holds an impact (impulse or lumped law)
-        Vec2 held_acceleration = Vec2::Zero();  // the accelerations the step was predicted with
-        double held_angular_acceleration = 0.0;
-        bool started = false;       // has taken a step (a restored body has)
-        bool after_impact = false;  // the last step held an impact
+        bool started = false;  // has taken a step (a restored body has)
     };
     FreeBodySettings settings_;
     std::vector<Body>& bodies_;
@@ -102,7 +89,7 @@ private:
     std::vector<BodyLoads> loads_;
     std::vector<ContactEvent> events_;
     double coupling_change_ = 0.0;
-    bool impulsive_ = false;  // a free body starts or hits an obstacle in this step
+    bool first_step_ = false;  // a free body takes its first step
 };
 
 }  // namespace chute
