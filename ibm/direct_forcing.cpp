@@ -123,7 +123,6 @@ void DirectForcing::force_interior(Velocity& star, double dt) {
         }
         if (grid_.size() > 1) MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, grid_.comm());
         result_[b].momentum_rate += Vec2(sums[0], sums[1]);
-        result_[b].interior_rate = Vec2(sums[0], sums[1]);
         result_[b].torque_rate += sums[2];
     }
 }

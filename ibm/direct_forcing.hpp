@@ -37,7 +37,6 @@ namespace chute {
 struct BodyForcing {
     Vec2 momentum_rate = Vec2::Zero();  // sum_l F_l dV_l: force on the fluid / (rho depth)  (m^3/s^2)
     double torque_rate = 0.0;           // sum_l (X_l - x_c) x F_l dV_l about the body centre  (m^4/s^2)
-    Vec2 interior_rate = Vec2::Zero();  // the volume forcing's part of momentum_rate (m^3/s^2)
     double max_slip = 0.0;              // max_l |U_l - U_body(X_l)| after forcing (m/s)
     double rms_slip = 0.0;
 };

@@ -159,10 +159,8 @@ void FreeBodies::restore(const std::filesystem::path& checkpoint) {
         double legacy[4];
         std::size_t k = 0, count = 0;
         each_value([&](double&) { ++count; }, s, f.acceleration, f.angular_acceleration, f.contact);
-        // Checkpoints of main e83f037-f3b74f5 end with an after-impact flag, no longer used.
         const bool old_layout = values->size() == count + 4;
-        const bool with_flag = values->size() == count + 1;
-        if (values->size() != count && !old_layout && !with_flag)
+        if (values->size() != count && !old_layout)
             throw std::runtime_error("checkpoint '" + checkpoint.string() + "': the state of free body `" +
                                      body.name() + "` has " + std::to_string(values->size()) + " values, expected " +
                                      std::to_string(count));

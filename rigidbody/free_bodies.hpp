@@ -54,7 +54,6 @@ public:
     // the net weight's, (m - m_f) |g| / m. Elsewhere the flow of the last step already moves with the body,
     // and a pass would only chase the step-to-step noise of the force. (Impacts were tried too:
     // docs/validation.md says why they are not coupled this way.)
-    double coupling_change() const { return coupling_change_; }
     // Whether a step that has made `passes` passes makes another.
     bool another_pass(int passes) const {
         return first_step_ && passes < settings_.coupling.max_passes && coupling_change_ > settings_.coupling.tolerance;
@@ -75,7 +74,7 @@ private:
         std::size_t index = 0;  // in the run's bodies
         RigidInertia inertia;
         double fluid_mass = 0.0, fluid_inertia = 0.0;  // rho_f V and rho_f J depth: the displaced fluid
-        double weight_acceleration = 0.0;              // |m - m_f| |g| / m: the scale of coupling_change()
+        double weight_acceleration = 0.0;              // |m - m_f| |g| / m: the scale of coupling_change_
         BodyState start;                               // at t^n
         Vec2 acceleration = Vec2::Zero();              // of the last update: the next prediction
         double angular_acceleration = 0.0;
@@ -88,8 +87,8 @@ private:
     std::vector<Free> free_;
     std::vector<BodyLoads> loads_;
     std::vector<ContactEvent> events_;
-    double coupling_change_ = 0.0;
-    bool first_step_ = false;  // a free body takes its first step
+    double coupling_change_ = 0.0;  // how far the last correct() moved the accelerations, in those scales
+    bool first_step_ = false;       // a free body takes its first step
 };
 
 }  // namespace chute
