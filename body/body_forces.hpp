@@ -19,14 +19,19 @@ struct SurfaceForces {
     double total_torque() const { return pressure_torque + viscous_torque + turbulent_torque; }
 };
 
-// What moved a free body besides the fluid over the last step.
+// What moved a free body besides the fluid over the last step. An impact is an impulse (N s), recorded as
+// one rather than as a force impulse / dt that would scale with 1/dt: the obstacle's on the body and the
+// water's, the jump of the fluid's momentum the body reverses with it (rigidbody/free_bodies.hpp). `contact` is
+// what the obstacles push with between impacts (resting, sliding, the soft law).
 struct BodyLoads {
-    Vec2 gravity = Vec2::Zero(), buoyancy = Vec2::Zero(), contact = Vec2::Zero();  // contact: impulses / dt
+    Vec2 gravity = Vec2::Zero(), buoyancy = Vec2::Zero(), contact = Vec2::Zero();
     double contact_torque = 0.0;
+    Vec2 contact_impulse = Vec2::Zero(), water_impulse = Vec2::Zero();  // N s, in a step with an impact
+    double contact_angular_impulse = 0.0, water_angular_impulse = 0.0;  // N m s
 };
 
 struct BodyForces {
-    Vec2 forcing = Vec2::Zero();            // (a)
+    Vec2 forcing = Vec2::Zero();            // (a); an impact's water impulse left out (loads.water_impulse)
     double forcing_torque = 0.0;            // (a)
     SurfaceForces surface;                  // (b)
     double max_slip = 0.0, rms_slip = 0.0;  // m/s: how far the fluid at the surface is from the body's velocity

@@ -11,6 +11,13 @@ namespace chute {
 //   soft: a spring-dashpot at the contact point over a finite contact time, sub-stepped inside the step.
 enum class ReboundLaw { lumped, impulse, soft };
 
+// Who reverses the water a body carries at an impact (lumped and impulse laws; rigidbody/free_bodies.hpp):
+//   body: the law acts on the body alone, and the water moving with it then takes its momentum back from the
+//         body at once (the "memory" of the water in Turmel & Locat 2008's CFD);
+//   obstacle: the obstacle stops the body and the water it carries together (the effective mass m + m_a of
+//         wet-collision models, Legendre et al. 2006), and the body leaves at the law's velocity.
+enum class WaterImpulse { body, obstacle };
+
 struct ContactConfig {
     ReboundLaw law = ReboundLaw::lumped;
     double normal_restitution = 0.8;      // Rn
@@ -19,6 +26,7 @@ struct ContactConfig {
     double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
     double distance = 0.0;                // m: impacts happen at this gap (0: at the surface)
     double duration = 0.002;              // s: soft law, contact time of one impact
+    WaterImpulse water_impulse = WaterImpulse::body;
 };
 
 // The schema's contact section (io/case_reader.hpp) and its reading.

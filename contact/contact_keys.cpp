@@ -53,6 +53,17 @@ std::vector<CaseKey> contact_keys() {
          .units = "s",
          .meaning = "Soft law: the duration of one impact (it sets the spring's stiffness; Rn sets its "
                     "damping). It is sub-stepped in 100 steps whatever the flow's step."},
+        {.path = "contact.water_impulse",
+         .type = K::choice,
+         .default_value = "body",
+         .choices = {"body", "obstacle"},
+         .meaning = "Lumped and impulse laws in a fluid: who reverses the water the body carries (its added "
+                    "mass) at an impact. `body` (Turmel & Locat 2008): the law sets the body's velocity, then "
+                    "that water takes its momentum back from the body at once, so the body leaves slower than "
+                    "the law says. `obstacle` (wet-collision models, Legendre et al. 2006): the obstacle stops "
+                    "the body and its water together and the body leaves at the law's velocity. Either way the "
+                    "water's impulse is solved within the impact step (numerics.coupling) and recorded in N s; "
+                    "contacts.csv gives the rebound with it (docs/validation.md)."},
         {.path = "contact.friction",
          .type = K::number,
          .default_value = "0.0",
@@ -71,6 +82,8 @@ ContactConfig read_contact(const CaseReader& r) {
     c.friction = r.number("contact.friction");
     c.distance = r.number("contact.distance");
     c.duration = r.number("contact.duration");
+    c.water_impulse = r.choice<WaterImpulse>("contact.water_impulse",
+                                             {{"body", WaterImpulse::body}, {"obstacle", WaterImpulse::obstacle}});
     return c;
 }
 

@@ -18,16 +18,25 @@ struct ContactEvent {
     double time = 0.0;
     std::string body, obstacle;
     Vec2 point = Vec2::Zero();   // contact point
+    Vec2 normal = Vec2::Zero();  // the obstacle's, towards the body
     Vec2 centre = Vec2::Zero();  // the body's centre at the impact
     Vec2 velocity_before = Vec2::Zero(), velocity_after = Vec2::Zero();
     double angular_velocity_before = 0.0, angular_velocity_after = 0.0;
     // Effective coefficients at the contact point: -V_n'/V_n and V_t'/V_t (NaN when V_t = 0).
     double normal_restitution = 0.0, tangential_restitution = 0.0;
     bool rests = false;  // the rebound was slower than the rest speed: the body now rests on the obstacle
+    // In a fluid (rigidbody/free_bodies.hpp): the body's velocity once the water it carries has been reversed
+    // too, and the effective coefficients of that rebound (the wet restitution). In a vacuum: the law's.
+    Vec2 velocity_wet = Vec2::Zero();
+    double angular_velocity_wet = 0.0;
+    double wet_normal_restitution = 0.0, wet_tangential_restitution = 0.0;
 };
 
-// Fills the event's effective coefficients from the contact point's velocity before and after the impact.
+// Fills the event's effective coefficients from the contact point's velocity before and after the impact
+// (and the wet rebound with them: the same until set_wet_rebound).
 void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& after, const Vec2& n);
+// The body's velocity once the water it carries has been reversed too, and its effective coefficients.
+void set_wet_rebound(ContactEvent& e, const Vec2& velocity, double angular_velocity);
 
 // Applies the case's rebound law at the impact point X (world) of an obstacle with normal n. Returns the event
 // (time, names and `rests` are left for the caller).

@@ -221,6 +221,12 @@ StepStats FlowSolver::reproject() {
     return stats;
 }
 
+void FlowSolver::forget_impulsive_pressure() {
+    p_ = p_old_;
+    halo_->exchange(p_);
+    bc_->apply_pressure(p_);
+}
+
 void FlowSolver::solve_and_correct(StepStats& stats) {
     const double dt = stats.dt;
     // 1. Pressure-increment Poisson equation laplacian(phi) = div(u*) / dt.

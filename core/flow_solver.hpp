@@ -58,6 +58,10 @@ public:
     // the AB2 history stay those of the step; the returned stats are this pass's solve.
     Velocity& reopen();
     StepStats reproject();
+    // After a step in which a body's velocity jumped (an impact): p^{n+1/2} holds the impulsive pressure / dt
+    // that reversed the water with it, an impulse of that instant only. Kept, the next step's prediction
+    // (u* = ... - dt grad p) would give the water that impulse again, so the next step starts from p^{n-1/2}.
+    void forget_impulsive_pressure();
     // The step advance() would take: min of the CFL and diffusion limits (none with implicit diffusion),
     // max_dt, or the fixed dt.
     double next_dt() const;

@@ -51,17 +51,23 @@ double FreeBodies::max_dt(double cfl) const {
 }
 
 void FreeBodies::predict(double t, double dt) {
-    first_step_ = false;
+    impulsive_ = false;
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         f.start = body.state();
         f.contact_at_start = f.contact;
+        f.held_acceleration = f.acceleration;
+        f.held_angular_acceleration = f.angular_acceleration;
         BodyState s = f.start;
         s.acceleration = f.acceleration;
         s.angular_acceleration = f.angular_acceleration;
         ContactState c = f.contact;
-        move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles, settings_.contact);
-        first_step_ = first_step_ || !f.started;
+        const auto events = move_with_contacts(s, c, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles,
+                                               settings_.contact);
+        f.impact = settings_.contact.law != ReboundLaw::soft && !events.empty();
+        impulsive_ = impulsive_ || f.impact || !f.started;
+        f.rebound_velocity = s.velocity;  // the law's, as predicted: the first pass forces the water to it
+        f.rebound_angular_velocity = s.angular_velocity;
         f.started = true;
         body.set_state(s);
     }
@@ -76,31 +82,90 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
         BodyLoads& out = loads_[f.index];
+        const BodyLoads last_pass = out;
+        out = BodyLoads{};
         out.gravity = f.inertia.mass * g;
         out.buoyancy = -f.fluid_mass * g;
+        const Vec2 free_translation = f.inertia.free_translation();
+        const bool turns = f.inertia.free(Dof::rotation);
+        const double reach = body.outline().reach();
 
-        const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
         BodyState s = f.start;
-        s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
-        s.acceleration = s.acceleration.cwiseProduct(f.inertia.free_translation());
-        s.angular_acceleration = f.inertia.free(Dof::rotation)
-                                     ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
-                                           (f.inertia.inertia + cv * f.fluid_inertia)
-                                     : 0.0;
-        if (f.weight_acceleration > 0.0) {
-            const double change = (s.acceleration - f.acceleration).norm() +
-                                  std::abs(s.angular_acceleration - f.angular_acceleration) * body.outline().reach();
-            coupling_change_ = std::max(coupling_change_, change / f.weight_acceleration);
+        double change = 0.0;  // of this pass against the last, in units of the net weight's acceleration
+        if (f.impact) {
+            // The held accelerations stand for the regular forces (m a* = F_regular + W); the rest of the wrench
+            // over the step is the water's impulse at the impact.
+            s.acceleration = f.held_acceleration;
+            s.angular_acceleration = f.held_angular_acceleration;
+            const Vec2 regular = f.inertia.mass * f.held_acceleration - (out.gravity + out.buoyancy);
+            out.water_impulse = ((hydrodynamic.force - regular) * dt).cwiseProduct(free_translation);
+            out.water_angular_impulse =
+                turns ? (hydrodynamic.torque - f.inertia.inertia * f.held_angular_acceleration) * dt : 0.0;
+            const double scale = std::max(out.water_impulse.norm(), f.inertia.mass * f.weight_acceleration * dt);
+            change = ((out.water_impulse - last_pass.water_impulse).norm() +
+                      std::abs(out.water_angular_impulse - last_pass.water_angular_impulse) / reach) /
+                     scale;
+        } else {
+            const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
+            s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
+            s.acceleration = s.acceleration.cwiseProduct(free_translation);
+            s.angular_acceleration = turns ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
+                                                 (f.inertia.inertia + cv * f.fluid_inertia)
+                                           : 0.0;
+            if (f.weight_acceleration > 0.0)
+                change = ((s.acceleration - f.acceleration).norm() +
+                          std::abs(s.angular_acceleration - f.angular_acceleration) * reach) /
+                         f.weight_acceleration;
+            f.acceleration = s.acceleration;
+            f.angular_acceleration = s.angular_acceleration;
         }
-        f.acceleration = s.acceleration;
-        f.angular_acceleration = s.angular_acceleration;
         f.contact = f.contact_at_start;
-        // Contact force over the step: what the impacts (and a resting reaction) changed against free flight.
+        // Contact over the step: what the impacts (and a resting reaction) changed against free flight.
         const BodyState free_flight = drift(s, dt);
-        const auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia,
-                                           settings_.obstacles, settings_.contact);
-        out.contact = f.inertia.mass * (s.velocity - free_flight.velocity) / dt;
-        out.contact_torque = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity) / dt;
+        auto ev = move_with_contacts(s, f.contact, t, dt, body.name(), body.outline(), f.inertia, settings_.obstacles,
+                                     settings_.contact);
+        const Vec2 contact = f.inertia.mass * (s.velocity - free_flight.velocity);
+        const double contact_angular = f.inertia.inertia * (s.angular_velocity - free_flight.angular_velocity);
+        if (f.impact && settings_.contact.water_impulse == WaterImpulse::obstacle) {
+            // The obstacle stops the water's share too: J_contact = m dv - J_water.
+            out.contact_impulse = contact - out.water_impulse;
+            out.contact_angular_impulse = contact_angular - out.water_angular_impulse;
+        } else if (f.impact && !ev.empty() && !ev.back().rests) {
+            // The water takes its momentum back from the body at the impact: m (V - V_law) = J_w(V), relaxed
+            // with the virtual mass (J_w of this pass is the water's answer to the last pass's V).
+            out.contact_impulse = contact;
+            out.contact_angular_impulse = contact_angular;
+            const double c = cv * f.fluid_mass, ci = cv * f.fluid_inertia;
+            Vec2 v = (f.inertia.mass * s.velocity + out.water_impulse + c * f.rebound_velocity) / (f.inertia.mass + c);
+            const double w = turns ? (f.inertia.inertia * s.angular_velocity + out.water_angular_impulse +
+                                      ci * f.rebound_angular_velocity) /
+                                         (f.inertia.inertia + ci)
+                                   : s.angular_velocity;
+            const double scale = std::max(out.water_impulse.norm() / f.inertia.mass, f.weight_acceleration * dt);
+            change = std::max(
+                change, ((v - f.rebound_velocity).norm() + std::abs(w - f.rebound_angular_velocity) * reach) / scale);
+            f.rebound_velocity = v;
+            f.rebound_angular_velocity = w;
+            // Water that would push the body back into the obstacle presses it on it: the obstacle holds that.
+            const Vec2 n = ev.back().normal;
+            if (v.dot(n) < 0.0) {
+                out.contact_impulse -= f.inertia.mass * v.dot(n) * n;
+                v -= v.dot(n) * n;
+            }
+            // From the (last) impact on, the body moves with the water's impulse added.
+            ContactEvent& last = ev.back();
+            const double after = t + dt - last.time;
+            set_wet_rebound(last, last.velocity_after + (v - s.velocity),
+                            last.angular_velocity_after + (w - s.angular_velocity));
+            s.centre += (v - s.velocity) * after;
+            s.angle += (w - s.angular_velocity) * after;
+            s.velocity = v;
+            s.angular_velocity = w;
+        } else {
+            out.contact = contact / dt;
+            out.contact_torque = contact_angular / dt;
+        }
+        coupling_change_ = std::max(coupling_change_, change);
         events_.insert(events_.end(), ev.begin(), ev.end());
         body.set_state(s);
     }

@@ -11,9 +11,22 @@
 //                   Kempe & Froehlich 2015, JCP 281:591), which keeps light bodies stable:
 //                     (m + C_V m_f) a = F_h + (m - m_f) g + C_V m_f a*,   a* the predicted acceleration,
 //                   and the motion over the step with a held, impacts located inside it (contact/).
-//   another_pass()  strong coupling in a free body's first step: the step forces and projects again while
-//                   the update still moves (numerics.coupling), and correct() runs again from the same start.
+//   another_pass()  strong coupling: the step forces and projects again while the update still moves
+//                   (numerics.coupling), and correct() runs again from the same start.
+// An impact (impulse or lumped law) reverses the body's velocity at one instant, and the water moving with it
+// (its added mass m_a) must reverse too. The rebound law sets the body's velocity; the passes let the fluid
+// follow within the step, and what the wrench then holds beyond the regular force (the one the held
+// accelerations stand for) is the water's impulse at the impact, J_w ~ -m_a dv. Who supplies it is the
+// case's choice (contact.water_impulse):
+//   body (Turmel & Locat 2008): the water takes its momentum back from the body at once, so the body leaves
+//         at the velocity V with m (V - V_law) = J_w(V), solved over the passes with the virtual mass as
+//         relaxation: (m + C_V m_f) V_k = m V_law + J_w(V_{k-1}) + C_V m_f V_{k-1};
+//   obstacle (the effective mass m + m_a of wet-collision models, Legendre et al. 2006, Phys. Fluids
+//         18:097102): the obstacle stops the body and its water together, and the body leaves at V_law.
+// Either way the step's impulses are recorded as impulses (BodyLoads, N s), the same for any dt, and the
+// event carries the rebound with the water's impulse (ContactEvent::velocity_wet).
 // The pressure is dynamic, so buoyancy -m_f g is added explicitly (m_f = rho_f V).
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -47,16 +60,24 @@ public:
     void predict(double t, double dt);
     // `vel` is u^{n+1}, from which the carrier measures the hydrodynamic wrench.
     void correct(double t, double dt, const Velocity& vel);
-    // Strong coupling in a free body's first step: released in fluid at rest, with only an estimate of its
-    // acceleration, a single forcing and projection sets only about half of the fluid it drives in motion (its
-    // added mass, docs/validation.md), so the step forces and projects again, and correct() runs again from
-    // the same start, while the last pass moved the acceleration by more than numerics.coupling.tolerance of
-    // the net weight's, (m - m_f) |g| / m. Elsewhere the flow of the last step already moves with the body,
-    // and a pass would only chase the step-to-step noise of the force. (Impacts were tried too:
-    // docs/validation.md says why they are not coupled this way.)
+    // Strong coupling in the steps where a free body's velocity changes at once against the fluid's: its first
+    // step (released in fluid at rest, with only an estimate of its acceleration) and a step with an impact.
+    // There a single forcing and projection sets only part of the fluid the body drives in motion (about half
+    // of its added mass, docs/validation.md), so the step forces and projects again, and correct() runs again
+    // from the same start, while the last pass moved the update by more than numerics.coupling.tolerance: the
+    // acceleration by that fraction of the net weight's, (m - m_f) |g| / m, or an impact's water impulse (and
+    // with contact.water_impulse `body` the velocity the body leaves with) by that fraction of itself.
+    // Elsewhere the flow of the last step already moves with the body, and a pass would only chase the
+    // step-to-step noise of the force (the step after an impact too: passing there left the surface's slip
+    // five times larger, docs/validation.md).
     // Whether a step that has made `passes` passes makes another.
     bool another_pass(int passes) const {
-        return first_step_ && passes < settings_.coupling.max_passes && coupling_change_ > settings_.coupling.tolerance;
+        return impulsive_ && passes < settings_.coupling.max_passes && coupling_change_ > settings_.coupling.tolerance;
+    }
+    // Whether a free body hit an obstacle with an impulse law in this step (its water's impulse is in the
+    // step's pressure: FlowSolver::forget_impulsive_pressure).
+    bool impact_step() const {
+        return std::any_of(free_.begin(), free_.end(), [](const Free& f) { return f.impact; });
     }
     // Gravity, buoyancy and contact on body b over the last step (zero for bodies that are not free).
     const BodyLoads& loads(std::size_t b) const { return loads_[b]; }
@@ -79,6 +100,11 @@ private:
         Vec2 acceleration = Vec2::Zero();              // of the last update: the next prediction
         double angular_acceleration = 0.0;
         ContactState contact, contact_at_start;
+        bool impact = false;                    // the step's motion holds an impact (impulse or lumped law)
+        Vec2 held_acceleration = Vec2::Zero();  // the accelerations the step was predicted with
+        double held_angular_acceleration = 0.0;
+        Vec2 rebound_velocity = Vec2::Zero();  // contact.water_impulse body: the last pass's V_k (and spin)
+        double rebound_angular_velocity = 0.0;
         bool started = false;  // has taken a step (a restored body has)
     };
     FreeBodySettings settings_;
@@ -87,8 +113,8 @@ private:
     std::vector<Free> free_;
     std::vector<BodyLoads> loads_;
     std::vector<ContactEvent> events_;
-    double coupling_change_ = 0.0;  // how far the last correct() moved the accelerations, in those scales
-    bool first_step_ = false;       // a free body takes its first step
+    double coupling_change_ = 0.0;  // how far the last correct() moved the update, in its scales
+    bool impulsive_ = false;        // a free body starts or hits an obstacle in this step
 };
 
 }  // namespace chute

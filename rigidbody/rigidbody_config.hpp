@@ -14,11 +14,12 @@ struct LumpedConfig {
     double added_mass_coefficient = 0.5;
 };
 
-// Strong coupling of a free body in its first step (rigidbody/free_bodies.hpp): after the first forcing,
-// projection and body update the step passes again (force u^{n+1} towards the corrected motion, project,
-// update) while the acceleration moves by more than `tolerance` of the net weight's, at most `max_passes`
-// passes in all. One pass sets only part of the fluid in motion (about half of the added mass at the start of
-// a fall, docs/validation.md); the passes complete it.
+// Strong coupling of free bodies in the steps where their velocity changes at once against the fluid's (the
+// first step, an impact; rigidbody/free_bodies.hpp): after the first forcing, projection and body update the
+// step passes again (force u^{n+1} towards the corrected motion, project, update) while the update moves by
+// more than `tolerance` (of the net weight's acceleration, or of an impact's water impulse), at most
+// `max_passes` passes in all. One pass sets only part of the fluid in motion (about half of the added mass at
+// the start of a fall, docs/validation.md); the passes complete it.
 struct CouplingConfig {
     int max_passes = 20;
     double tolerance = 0.01;

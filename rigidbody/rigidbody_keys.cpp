@@ -30,9 +30,9 @@ std::vector<CaseKey> rigidbody_keys() {
 
         {.path = "numerics.coupling",
          .type = K::section,
-         .meaning = "Strong coupling of a free body and the flow in its first step (released in fluid at rest): "
-                    "further forcing and projection passes, so that the fluid the body sets in motion (its added "
-                    "mass) moves within the step."},
+         .meaning = "Strong coupling of free bodies and flow in the steps where a body's velocity changes at once "
+                    "against the fluid's (its first step, an impact): further forcing and projection passes, so "
+                    "that the fluid the body sets in motion (its added mass) moves within the step."},
         {.path = "numerics.coupling.max_passes",
          .type = K::integer,
          .default_value = "20",
@@ -43,8 +43,9 @@ std::vector<CaseKey> rigidbody_keys() {
          .type = K::number,
          .default_value = "0.01",
          .min = above(0),
-         .meaning = "That step passes again while the last pass moved a free body's acceleration by more than "
-                    "this fraction of its net weight's acceleration |m - m_f| g / m."},
+         .meaning = "Such a step passes again while the last pass moved a free body's acceleration by more than "
+                    "this fraction of its net weight's acceleration |m - m_f| g / m, or an impact's water "
+                    "impulse by more than this fraction of itself."},
     };
 }
 

@@ -27,9 +27,9 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.correct(t, dt, flow.velocity());
     }
-    // Strong coupling in a free body's first step: while its update still moves, force u^{n+1} towards the
-    // corrected motion and project again. One pass sets only part of the fluid the body drives in motion (its
-    // added mass); the passes complete it (rigidbody/free_bodies.hpp).
+    // Strong coupling where a free body's velocity changes at once (its first step, an impact): while its update
+    // still moves, force u^{n+1} towards the corrected motion and project again. One pass sets only part of the
+    // fluid the body drives in motion (its added mass); the passes complete it (rigidbody/free_bodies.hpp).
     while (free_bodies.another_pass(stats.coupling_passes)) {
         {
             StageTimer::Scope timed(timer, "bodies");
@@ -40,6 +40,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.correct(t, dt, flow.velocity());
     }
+    if (free_bodies.impact_step()) flow.forget_impulsive_pressure();
     if (KEpsilon* turbulence = model.turbulence()) {
         StageTimer::Scope timed(timer, "turbulence");
         turbulence->update(dt);
@@ -50,9 +51,19 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
 std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer) {
     StageTimer::Scope timed(timer, "forces");
     const std::optional<WallTurbulence> turbulence = model.wall_turbulence();
+    FlowSolver& flow = model.flow();
+    // After an impact step the pressure is the step's starting one (forget_impulsive_pressure), so (b) holds
+    // no impulse / dt.
     std::vector<BodyForces> forces =
-        model.carrier().measure(model.flow().velocity(), model.flow().pressure(), turbulence ? &*turbulence : nullptr);
-    for (std::size_t b = 0; b < forces.size(); ++b) forces[b].loads = model.free_bodies().loads(b);
+        model.carrier().measure(flow.velocity(), flow.pressure(), turbulence ? &*turbulence : nullptr);
+    const double dt = flow.previous_dt();
+    for (std::size_t b = 0; b < forces.size(); ++b) {
+        BodyForces& f = forces[b];
+        f.loads = model.free_bodies().loads(b);
+        // An impact's water impulse is recorded as the impulse it is (loads), not inside the step's force.
+        f.forcing -= f.loads.water_impulse / dt;
+        f.forcing_torque -= f.loads.water_angular_impulse / dt;
+    }
     return forces;
 }
 

@@ -5,7 +5,7 @@
 //   bodies to t^{n+1}, imposed on u*  (free bodies predicted, prescribed ones placed; the carrier's forcing)
 //   pressure projection               (FlowSolver::project: hypre)
 //   rigid-body update and contact     (the carrier's hydrodynamic wrench on each free body; impacts)
-//   [forcing, projection, update]     again in a free body's first step (strong coupling)
+//   [forcing, projection, update]     again in a free body's first step and at an impact (strong coupling)
 //   turbulence update                 (k-epsilon from u^{n+1})
 //   force measures                    (both, on every body: measure_forces)
 //

@@ -27,6 +27,7 @@ void TrajectorySummary::observe(double t, const std::vector<BodyForces>& forces)
         k.last_centre = s.centre;
         k.peak_hydrodynamic = std::max(k.peak_hydrodynamic, forces[k.index].forcing.norm());
         k.peak_contact = std::max(k.peak_contact, forces[k.index].loads.contact.norm());
+        k.peak_impulse = std::max(k.peak_impulse, forces[k.index].loads.contact_impulse.norm());
     }
 }
 
@@ -79,8 +80,9 @@ std::string TrajectorySummary::text() const {
             std::snprintf(buf, sizeof buf, "  impacts: %zu\n", k.events.size());
             out += buf;
         }
-        std::snprintf(buf, sizeof buf, "  peak hydrodynamic force %.4g N, peak contact force (impulse / dt) %.4g N\n",
-                      k.peak_hydrodynamic, k.peak_contact);
+        std::snprintf(buf, sizeof buf,
+                      "  peak hydrodynamic force %.4g N, peak contact force %.4g N, largest impact impulse %.4g N s\n",
+                      k.peak_hydrodynamic, k.peak_contact, k.peak_impulse);
         out += buf;
     }
     return out;

@@ -23,7 +23,7 @@ private:
         std::size_t index = 0;
         std::string name;
         std::vector<std::pair<double, double>> speed;  // (t, |v|) before the first impact
-        double peak_hydrodynamic = 0.0, peak_contact = 0.0;
+        double peak_hydrodynamic = 0.0, peak_contact = 0.0, peak_impulse = 0.0;
         std::vector<ContactEvent> events;
         double rebound_height = 0.0;  // highest rise of the centre after the first impact, before the second
         Vec2 last_centre = Vec2::Zero();
