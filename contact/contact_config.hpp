@@ -12,11 +12,13 @@ namespace chute {
 enum class ReboundLaw { lumped, impulse, soft };
 
 // Who reverses the water a body carries at an impact (lumped and impulse laws; rigidbody/free_bodies.hpp):
-//   body: the law acts on the body alone, and the water moving with it then takes its momentum back from the
-//         body at once (the "memory" of the water in Turmel & Locat 2008's CFD);
 //   obstacle: the obstacle stops the body and the water it carries together (the effective mass m + m_a of
-//         wet-collision models, Legendre et al. 2006), and the body leaves at the law's velocity.
-enum class WaterImpulse { body, obstacle };
+//         wet-collision models, Legendre et al. 2006), and the body leaves at the law's velocity. The sphere
+//         experiments find the wet restitution near the dry one at high Stokes number (Joseph et al. 2001,
+//         Gondret et al. 2002), and so does Chute's own resolved contact (docs/validation.md);
+//   body: the law acts on the body alone, and the water moving with it then takes its momentum back from the
+//         body at once (Turmel & Locat 2008's CFD: the "memory" of the water).
+enum class WaterImpulse { obstacle, body };
 
 struct ContactConfig {
     ReboundLaw law = ReboundLaw::lumped;
@@ -26,7 +28,7 @@ struct ContactConfig {
     double friction = 0.0;                // Coulomb coefficient while resting (sliding) on an obstacle
     double distance = 0.0;                // m: impacts happen at this gap (0: at the surface)
     double duration = 0.002;              // s: soft law, contact time of one impact
-    WaterImpulse water_impulse = WaterImpulse::body;
+    WaterImpulse water_impulse = WaterImpulse::obstacle;
 };
 
 // The schema's contact section (io/case_reader.hpp) and its reading.

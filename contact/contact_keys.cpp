@@ -55,15 +55,17 @@ std::vector<CaseKey> contact_keys() {
                     "damping). It is sub-stepped in 100 steps whatever the flow's step."},
         {.path = "contact.water_impulse",
          .type = K::choice,
-         .default_value = "body",
-         .choices = {"body", "obstacle"},
+         .default_value = "obstacle",
+         .choices = {"obstacle", "body"},
          .meaning = "Lumped and impulse laws in a fluid: who reverses the water the body carries (its added "
-                    "mass) at an impact. `body` (Turmel & Locat 2008): the law sets the body's velocity, then "
-                    "that water takes its momentum back from the body at once, so the body leaves slower than "
-                    "the law says. `obstacle` (wet-collision models, Legendre et al. 2006): the obstacle stops "
-                    "the body and its water together and the body leaves at the law's velocity. Either way the "
-                    "water's impulse is solved within the impact step (numerics.coupling) and recorded in N s; "
-                    "contacts.csv gives the rebound with it (docs/validation.md)."},
+                    "mass) at an impact. `obstacle` (wet-collision models, Legendre et al. 2006): the obstacle "
+                    "stops the body and its water together, and the body leaves at the law's velocity, as the "
+                    "sphere experiments at high Stokes number find (Joseph et al. 2001, Gondret et al. 2002) and "
+                    "a contact resolved over many steps (`soft`) gives. `body` (Turmel & Locat 2008's CFD): "
+                    "the law sets the body's velocity, then that water takes its momentum back from the body at "
+                    "once, so the body leaves far slower. Either way the water's impulse is solved within the "
+                    "impact step (numerics.coupling) and recorded in N s; contacts.csv gives the rebound with it "
+                    "(docs/validation.md, Impacts in water)."},
         {.path = "contact.friction",
          .type = K::number,
          .default_value = "0.0",
@@ -83,7 +85,7 @@ ContactConfig read_contact(const CaseReader& r) {
     c.distance = r.number("contact.distance");
     c.duration = r.number("contact.duration");
     c.water_impulse = r.choice<WaterImpulse>("contact.water_impulse",
-                                             {{"body", WaterImpulse::body}, {"obstacle", WaterImpulse::obstacle}});
+                                             {{"obstacle", WaterImpulse::obstacle}, {"body", WaterImpulse::body}});
     return c;
 }
 

@@ -18,11 +18,11 @@
 // follow within the step, and what the wrench then holds beyond the regular force (the one the held
 // accelerations stand for) is the water's impulse at the impact, J_w ~ -m_a dv. Who supplies it is the
 // case's choice (contact.water_impulse):
+//   obstacle (the default; the effective mass m + m_a of wet-collision models, Legendre et al. 2006, Phys.
+//         Fluids 18:097102): the obstacle stops the body and its water together, and the body leaves at V_law;
 //   body (Turmel & Locat 2008): the water takes its momentum back from the body at once, so the body leaves
 //         at the velocity V with m (V - V_law) = J_w(V), solved over the passes with the virtual mass as
-//         relaxation: (m + C_V m_f) V_k = m V_law + J_w(V_{k-1}) + C_V m_f V_{k-1};
-//   obstacle (the effective mass m + m_a of wet-collision models, Legendre et al. 2006, Phys. Fluids
-//         18:097102): the obstacle stops the body and its water together, and the body leaves at V_law.
+//         relaxation: (m + C_V m_f) V_k = m V_law + J_w(V_{k-1}) + C_V m_f V_{k-1}.
 // Either way the step's impulses are recorded as impulses (BodyLoads, N s), the same for any dt, and the
 // event carries the rebound with the water's impulse (ContactEvent::velocity_wet).
 // The pressure is dynamic, so buoyancy -m_f g is added explicitly (m_f = rho_f V).

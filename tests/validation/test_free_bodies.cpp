@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -153,7 +154,7 @@ struct ImpactRecord {
     ContactEvent event;
     Vec2 contact_impulse = Vec2::Zero(), water_impulse = Vec2::Zero();
     std::vector<double> times;
-    std::vector<Vec2> forces;  // (a), N
+    std::vector<Vec2> forces, velocities;  // (a), N; the body's, m/s
 };
 
 ImpactRecord first_impact(const std::string& example, std::vector<std::string> set, double cfl) {
@@ -162,7 +163,7 @@ ImpactRecord first_impact(const std::string& example, std::vector<std::string> s
     ImpactRecord r;
     double t_impact = NAN;
     std::vector<double> times;
-    std::vector<Vec2> forces;
+    std::vector<Vec2> forces, velocities;
     while (std::isnan(t_impact) || run.solver.time() < t_impact + 0.1) {
         const auto& f = run.step();
         if (std::isnan(t_impact) && !run.free.events().empty()) {
@@ -173,23 +174,33 @@ ImpactRecord first_impact(const std::string& example, std::vector<std::string> s
         }
         times.push_back(run.solver.time());
         forces.push_back(f[0].forcing);
+        velocities.push_back(run.ibm.bodies()[0].state().velocity);
         if (run.solver.time() > 3.0) break;  // no impact: the checks below fail on the NaNs
     }
     for (std::size_t k = 0; k < times.size(); ++k)
-        if (times[k] >= t_impact - 0.05) r.times.push_back(times[k]), r.forces.push_back(forces[k]);
+        if (times[k] >= t_impact - 0.05)
+            r.times.push_back(times[k]), r.forces.push_back(forces[k]), r.velocities.push_back(velocities[k]);
     return r;
 }
 
-// The largest one-step spike of the force, in N: a step whose force (x or y) stands above or below both its
-// neighbours, by the smaller of the two differences. A jump from one level to another is not a spike.
-double largest_one_step_spike(const ImpactRecord& r) {
+// The largest impulse one step after the impact step gives the body through the force (a), |F| dt in N s: a
+// force that is an impulse / dt carries a fixed impulse in one step whatever dt is.
+double largest_step_impulse_after(const ImpactRecord& r) {
     double worst = 0.0;
-    for (std::size_t k = 1; k + 1 < r.forces.size(); ++k)
-        for (int c = 0; c < 2; ++c) {
-            const double before = r.forces[k][c] - r.forces[k - 1][c], after = r.forces[k][c] - r.forces[k + 1][c];
-            if (before * after > 0.0) worst = std::max(worst, std::min(std::abs(before), std::abs(after)));
-        }
+    for (std::size_t k = 1; k < r.forces.size(); ++k)
+        if (r.times[k - 1] > r.event.time) worst = std::max(worst, r.forces[k].norm() * (r.times[k] - r.times[k - 1]));
     return worst;
+}
+
+// The body's velocity `after` seconds after the impact, interpolated in the record.
+Vec2 velocity_after(const ImpactRecord& r, double after) {
+    const double t = r.event.time + after;
+    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
+        if (r.times[k] <= t && t <= r.times[k + 1]) {
+            const double w = (t - r.times[k]) / (r.times[k + 1] - r.times[k]);
+            return (1.0 - w) * r.velocities[k] + w * r.velocities[k + 1];
+        }
+    return Vec2(NAN, NAN);
 }
 
 }  // namespace
@@ -198,22 +209,26 @@ double largest_one_step_spike(const ImpactRecord& r) {
 // rebound law acts at one instant; the water the block carries (its added mass) is reversed within the impact
 // step by coupling passes, and its impulse is recorded as an impulse, not as impulse / dt in one step's force.
 // The study's bed bounce (rotation locked, lumped law) and its 45 degree slope with rotation free (impulse
-// law), each with the step halved (cfl 0.4 and 0.2): impact and wet rebound velocities within 2 %, and no
-// step whose force stands away from both its neighbours by more than the block's net weight (1324 N for the
-// 0.3 m block at 2500 kg/m^3: before this, the step after an impact carried 1.2e4-5.3e4 N, see
-// docs/validation.md).
+// law), with either choice of who supplies the water's impulse (contact.water_impulse), each with the step
+// halved (cfl 0.4 and 0.2): impact and rebound velocities within 2 %, and no step after the impact step in
+// which the force (a) gives the body more than 2 % of the water's impulse (before this, the step after an
+// impact carried about all of it as one force of 1.2e4-5.3e4 N, docs/validation.md; what is left is a
+// transient of 3-5 steps, about 1 % of it per step, the same at either step). With the default choice the
+// motion 0.05 s after the impact also agrees within 2 % of the impact speed; the block that the `body` choice
+// leaves at 0.07 of its impact speed makes millimetre bounces whose timing that does not fix.
 TEST(FreeBodies, ImpactsDoNotDependOnTheTimeStep) {
-    const double net_weight = (2500.0 - 1000.0) * 0.09 * 9.81;
     struct Case {
         std::string name, example;
         std::vector<std::string> set;
     };
-    const std::vector<Case> cases = {
-        {"bed", "bounce_bed/case.yaml", {}},
-        {"slope 45 deg, rotation free",
-         "bounce_slope/case.yaml",
-         {"contact.law=impulse", "bodies.block.motion.lock_rotation=false"}},
-    };
+    std::vector<Case> cases;
+    for (const std::string who : {"obstacle", "body"}) {
+        cases.push_back({"bed, water_impulse " + who, "bounce_bed/case.yaml", {"contact.water_impulse=" + who}});
+        cases.push_back(
+            {"slope 45 deg, rotation free, water_impulse " + who,
+             "bounce_slope/case.yaml",
+             {"contact.law=impulse", "bodies.block.motion.lock_rotation=false", "contact.water_impulse=" + who}});
+    }
     for (const Case& c : cases) {
         const ImpactRecord coarse = first_impact(c.example, c.set, 0.4), fine = first_impact(c.example, c.set, 0.2);
         const double speed = fine.event.velocity_before.norm();
@@ -227,18 +242,56 @@ TEST(FreeBodies, ImpactsDoNotDependOnTheTimeStep) {
                 std::printf(
                     "%s, cfl %.1f: impact (%.4f, %.4f) m/s, law (%.4f, %.4f), with the water (%.4f, %.4f) m/s, spin "
                     "%.4f rad/s; wet restitution n %.4f t %.4f; impulses: contact (%.1f, %.1f), water (%.1f, %.1f) "
-                    "N s; largest one-step spike of (a) %.0f N\n",
+                    "N s; largest impulse of (a) in one step after it %.2f N s\n",
                     c.name.c_str(), r == &coarse ? 0.4 : 0.2, r->event.velocity_before.x(),
                     r->event.velocity_before.y(), r->event.velocity_after.x(), r->event.velocity_after.y(),
                     r->event.velocity_wet.x(), r->event.velocity_wet.y(), r->event.angular_velocity_wet,
                     r->event.wet_normal_restitution, r->event.wet_tangential_restitution, r->contact_impulse.x(),
-                    r->contact_impulse.y(), r->water_impulse.x(), r->water_impulse.y(), largest_one_step_spike(*r));
+                    r->contact_impulse.y(), r->water_impulse.x(), r->water_impulse.y(), largest_step_impulse_after(*r));
             std::printf("%s: step halved, impact velocity changes %.2f %%, rebound %.2f %%, spin (x 0.15 m) %.2f %%\n",
                         c.name.c_str(), 100 * impact_change, 100 * rebound_change, 100 * spin_change);
+        }
+        const double later_change = (velocity_after(coarse, 0.05) - velocity_after(fine, 0.05)).norm() / speed;
+        if (root())
+            std::printf(
+                "%s: velocity 0.05 s after the impact (%.4f, %.4f) against (%.4f, %.4f) m/s, %.2f %% of the "
+                "impact speed\n",
+                c.name.c_str(), velocity_after(coarse, 0.05).x(), velocity_after(coarse, 0.05).y(),
+                velocity_after(fine, 0.05).x(), velocity_after(fine, 0.05).y(), 100 * later_change);
+        if (c.name.find("obstacle") != std::string::npos) {
+            EXPECT_LT(later_change, 0.02) << c.name;
         }
         EXPECT_LT(impact_change, 0.02) << c.name;
         EXPECT_LT(rebound_change, 0.02) << c.name;
         EXPECT_LT(spin_change, 0.02) << c.name;
-        for (const ImpactRecord* r : {&coarse, &fine}) EXPECT_LT(largest_one_step_spike(*r), net_weight) << c.name;
+        for (const ImpactRecord* r : {&coarse, &fine})
+            EXPECT_LT(largest_step_impulse_after(*r), 0.02 * r->water_impulse.norm()) << c.name;
     }
+}
+
+// The wet restitution a contact resolved by the flow gives (VALIDATION.md, contact: "rebound approaches the dry
+// value above St ~ 500"; Joseph et al. 2001, J. Fluid Mech. 433:329, and Gondret et al. 2002, Phys. Fluids
+// 14:643, find e_wet / e_dry of 0.8-1 at St of 1e3-1e4; the study's block hits the bed at St ~ 1e6). The soft
+// law presses the block into the bed over 0.02 s, some 15 of the flow's steps, so the water the block carries
+// is stopped by the flow itself, not by a choice of model: its rebound over the dry one (the law's Rn = 0.8)
+// must stay above 0.7. The two impulse-law choices give 1 (`obstacle`) and 0.09 (`body`): this is the
+// measurement that chose `obstacle` as the default (docs/validation.md, Impacts in water). About 1 minute.
+TEST(FreeBodies, ResolvedContactInWaterReboundsNearTheDryRestitution) {
+    BodyRun run(load_case(kExamples + "bounce_bed/case.yaml", {"contact.law=soft", "contact.duration=0.02"}),
+                MPI_COMM_WORLD);
+    std::vector<ContactEvent> events;
+    while (events.empty() && run.solver.time() < 2.0) {
+        run.step();
+        events = run.free.events();
+    }
+    ASSERT_FALSE(events.empty()) << "the block never left the bed";
+    const ContactEvent& e = events.front();
+    const double wet = e.normal_restitution, dry = 0.8;
+    if (root())
+        std::printf(
+            "resolved contact (soft, 0.02 s) on the bed in water: impact %.4f m/s, leaves at %.4f m/s, wet "
+            "restitution %.4f = %.3f of the dry %.2f\n",
+            -e.velocity_before.y(), e.velocity_after.y(), wet, wet / dry, dry);
+    EXPECT_GT(wet / dry, 0.7);
+    EXPECT_LT(wet / dry, 1.1);
 }

@@ -183,28 +183,35 @@ TEST(Turbulence, StudyBlockFallsAtTheExperimentsSpeed) {
 // Runout after a bounce on a slope, water against air (Turmel & Locat 2008, sec. 4.3): "in water the block
 // travels less than 2/3 of the distance it travels in air" before its next impact on the 45 degree slope,
 // "less than half" on the 30 degree slope. examples/bounce_slope with k-epsilon, arrival at about 1.86 m/s;
-// runout = horizontal distance between the first two impacts. Slow: about 4 minutes on 2 ranks.
+// runout = horizontal distance between the first two impacts. The study's claim is checked with the study's
+// treatment of the impact, contact.water_impulse `body` (the rebound law on the block alone, the water then
+// takes its momentum back). With Chute's default, `obstacle` (the wet restitution near the dry one, as the
+// sphere experiments and a resolved contact find), the block flies farther in water than in air: printed for
+// the record, docs/validation.md "Impacts in water" says why. Slow: about 3 minutes on 2 ranks.
 TEST(Turbulence, SlopeRunoutInWaterIsShorterThanInAir) {
-    auto runout = [](double angle, bool air) {
-        std::vector<std::string> set = {"bodies.slope.angle=" + std::to_string(angle), "time.end=1.2"};
+    auto runout = [](double angle, bool air, const std::string& water_impulse) {
+        std::vector<std::string> set = {"bodies.slope.angle=" + std::to_string(angle), "time.end=2.0",
+                                        "contact.water_impulse=" + water_impulse};
         const double above = air ? (angle == 45 ? 0.617 : 0.528) : (angle == 45 ? 1.141 : 1.052);
         set.push_back("bodies.block.centre=[0.0, " + std::to_string(above) + "]");
         if (air) set.insert(set.end(), {"fluid.density=1.2", "fluid.viscosity=1.5e-5"});
         BodyRun run(load_case(kExamples + "bounce_slope/case.yaml", set), MPI_COMM_WORLD);
         std::vector<double> impacts_x;
-        while (run.solver.time() < 1.2 - 1e-12 && impacts_x.size() < 2) {
+        while (run.solver.time() < 2.0 - 1e-12 && impacts_x.size() < 2) {
             run.step();
             for (const ContactEvent& e : run.free.events()) impacts_x.push_back(e.centre.x());
         }
         return impacts_x.size() == 2 ? std::abs(impacts_x[1] - impacts_x[0]) : NAN;
     };
     for (double angle : {45.0, 30.0}) {
-        const double water = runout(angle, false), air = runout(angle, true);
+        const double air = runout(angle, true, "body");
+        const double water = runout(angle, false, "body"), water_obstacle = runout(angle, false, "obstacle");
         const double limit = angle == 45.0 ? 2.0 / 3.0 : 0.5;
         if (root())
             std::printf(
-                "slope %.0f deg, k-epsilon: runout %.4f m in water, %.4f m in air, ratio %.3f (study: < %.3f)\n", angle,
-                water, air, water / air, limit);
+                "slope %.0f deg, k-epsilon: runout %.4f m in water (water_impulse body), %.4f m in air, ratio %.3f "
+                "(study: < %.3f); water_impulse obstacle: %.4f m, ratio %.3f\n",
+                angle, water, air, water / air, limit, water_obstacle, water_obstacle / air);
         EXPECT_LT(water / air, limit);
     }
 }

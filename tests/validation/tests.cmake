@@ -57,8 +57,10 @@ chute_validation(free_neutral_disc_at_rest FreeBodies.NeutrallyBuoyantDiscStaysA
 chute_validation(free_light_disc_rises FreeBodies.LightDiscRisesWithItsAddedMass 2 "validation")
 chute_validation(settling_disc_glowinski FreeBodies.SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber 2 "validation")
 chute_validation(free_block_start FreeBodies.StudyBlockStartsWithItsPotentialFlowAcceleration 2 "validation")
-# Issue 15's impacts: the bed and the 45 degree slope with the step halved (about 4 minutes on 2 ranks).
+# Issue 15's impacts: the bed and the 45 degree slope with the step halved (about 2 minutes on 2 ranks), and
+# the wet restitution of a contact resolved by the flow (about 1 minute).
 chute_validation(impacts_step_independent FreeBodies.ImpactsDoNotDependOnTheTimeStep 2 "validation;slow")
+chute_validation(wet_rebound_resolved_contact FreeBodies.ResolvedContactInWaterReboundsNearTheDryRestitution 2 "validation;slow")
 chute_validation(free_body_start_inside_obstacle FreeBodies.StartInsideAnObstacleIsAnError 1 "validation")
 
 # Turbulence
