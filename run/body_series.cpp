@@ -2,60 +2,62 @@
 
 namespace chute {
 
+namespace {
+
+using Row = std::vector<std::pair<std::string, double>>;
+
+// One row of a body's series, named column by column, so that the header and the values cannot disagree.
+// q is the force scale of the coefficients, N.
+Row row(double t, const BodyState& s, const BodyForces& f, double q) {
+    Row r;
+    auto add = [&](const std::string& name, double value) { r.emplace_back(name, value); };
+    // A vector and a torque as three columns: <x><name>, <y><name>, <m><name> (f: forces, j: impulses).
+    auto triple = [&](const std::string& kind, const std::string& name, const Vec2& v, double torque) {
+        add(kind + "x_" + name, v.x());
+        add(kind + "y_" + name, v.y());
+        add((kind == "f" ? "m_" : kind + "m_") + name, torque);
+    };
+    auto pair = [&](const std::string& x, const std::string& y, const Vec2& v) {
+        add(x, v.x());
+        add(y, v.y());
+    };
+    const SurfaceForces& sf = f.surface;
+    const BodyLoads& loads = f.loads;
+    add("t", t);
+    pair("x", "y", s.centre);
+    add("angle", s.angle);
+    pair("u", "v", s.velocity);
+    add("omega", s.angular_velocity);
+    pair("ax", "ay", s.acceleration);
+    add("alpha", s.angular_acceleration);
+    triple("f", "forcing", f.forcing, f.forcing_torque);
+    triple("f", "pressure", sf.pressure, sf.pressure_torque);
+    triple("f", "viscous", sf.viscous, sf.viscous_torque);
+    triple("f", "turbulent", sf.turbulent, sf.turbulent_torque);
+    triple("f", "surface", sf.total(), sf.total_torque());
+    for (const auto& [name, force] : {std::pair<std::string, Vec2>{"forcing", f.forcing},
+                                      {"pressure", sf.pressure},
+                                      {"viscous", sf.viscous},
+                                      {"turbulent", sf.turbulent},
+                                      {"surface", sf.total()}})
+        pair("cx_" + name, "cy_" + name, force / q);
+    add("max_slip", f.max_slip);
+    add("rms_slip", f.rms_slip);
+    pair("fx_gravity", "fy_gravity", loads.gravity);
+    pair("fx_buoyancy", "fy_buoyancy", loads.buoyancy);
+    triple("f", "contact", loads.contact, loads.contact_torque);
+    triple("j", "contact", loads.contact_impulse, loads.contact_angular_impulse);
+    triple("j", "water", loads.water_impulse, loads.water_angular_impulse);
+    triple("f", "total", f.total(), f.total_torque());
+    return r;
+}
+
+}  // namespace
+
 std::vector<std::string> BodySeries::columns() {
-    return {"t",
-            "x",
-            "y",
-            "angle",
-            "u",
-            "v",
-            "omega",
-            "ax",
-            "ay",
-            "alpha",
-            "fx_forcing",
-            "fy_forcing",
-            "m_forcing",
-            "fx_pressure",
-            "fy_pressure",
-            "m_pressure",
-            "fx_viscous",
-            "fy_viscous",
-            "m_viscous",
-            "fx_turbulent",
-            "fy_turbulent",
-            "m_turbulent",
-            "fx_surface",
-            "fy_surface",
-            "m_surface",
-            "cx_forcing",
-            "cy_forcing",
-            "cx_pressure",
-            "cy_pressure",
-            "cx_viscous",
-            "cy_viscous",
-            "cx_turbulent",
-            "cy_turbulent",
-            "cx_surface",
-            "cy_surface",
-            "max_slip",
-            "rms_slip",
-            "fx_gravity",
-            "fy_gravity",
-            "fx_buoyancy",
-            "fy_buoyancy",
-            "fx_contact",
-            "fy_contact",
-            "m_contact",
-            "jx_contact",
-            "jy_contact",
-            "jm_contact",
-            "jx_water",
-            "jy_water",
-            "jm_water",
-            "fx_total",
-            "fy_total",
-            "m_total"};
+    std::vector<std::string> names;
+    for (const auto& [name, value] : row(0.0, BodyState{}, BodyForces{}, 1.0)) names.push_back(name);
+    return names;
 }
 
 BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, const Carrier& carrier,
@@ -68,67 +70,11 @@ BodySeries::BodySeries(const Grid& grid, const std::filesystem::path& out_dir, c
 void BodySeries::append(double t, const std::vector<BodyForces>& forces) {
     for (std::size_t k = 0; k < series_.size(); ++k) {
         const Body& body = bodies_[k];
-        const BodyState& s = body.state();
-        const BodyForces& f = forces[k];
-        const SurfaceForces& sf = f.surface;
-        const Vec2 surface = sf.total();
-        const Vec2 total = f.total();
-        const BodyLoads& loads = f.loads;
         const double U = body.config().reference_velocity, L = body.config().reference_length;
         const double q = 0.5 * density_ * U * U * L * depth_;  // force scale, N
-        series_[k]->append({t,
-                            s.centre.x(),
-                            s.centre.y(),
-                            s.angle,
-                            s.velocity.x(),
-                            s.velocity.y(),
-                            s.angular_velocity,
-                            s.acceleration.x(),
-                            s.acceleration.y(),
-                            s.angular_acceleration,
-                            f.forcing.x(),
-                            f.forcing.y(),
-                            f.forcing_torque,
-                            sf.pressure.x(),
-                            sf.pressure.y(),
-                            sf.pressure_torque,
-                            sf.viscous.x(),
-                            sf.viscous.y(),
-                            sf.viscous_torque,
-                            sf.turbulent.x(),
-                            sf.turbulent.y(),
-                            sf.turbulent_torque,
-                            surface.x(),
-                            surface.y(),
-                            sf.total_torque(),
-                            f.forcing.x() / q,
-                            f.forcing.y() / q,
-                            sf.pressure.x() / q,
-                            sf.pressure.y() / q,
-                            sf.viscous.x() / q,
-                            sf.viscous.y() / q,
-                            sf.turbulent.x() / q,
-                            sf.turbulent.y() / q,
-                            surface.x() / q,
-                            surface.y() / q,
-                            f.max_slip,
-                            f.rms_slip,
-                            loads.gravity.x(),
-                            loads.gravity.y(),
-                            loads.buoyancy.x(),
-                            loads.buoyancy.y(),
-                            loads.contact.x(),
-                            loads.contact.y(),
-                            loads.contact_torque,
-                            loads.contact_impulse.x(),
-                            loads.contact_impulse.y(),
-                            loads.contact_angular_impulse,
-                            loads.water_impulse.x(),
-                            loads.water_impulse.y(),
-                            loads.water_angular_impulse,
-                            total.x(),
-                            total.y(),
-                            f.total_torque()});
+        std::vector<double> values;
+        for (const auto& [name, value] : row(t, body.state(), forces[k], q)) values.push_back(value);
+        series_[k]->append(values);
     }
 }
 

@@ -12,7 +12,9 @@
 //   cx_surface, cy_surface
 //   max_slip, rms_slip                                               no-slip error at the markers (m/s)
 //   fx_gravity, fy_gravity, fx_buoyancy, fy_buoyancy,               free bodies (zero otherwise): gravity,
-//   fx_contact, fy_contact, m_contact, fx_total, fy_total, m_total  buoyancy, contact (impulses / dt), total
+//   fx_contact, fy_contact, m_contact,                               buoyancy, contact between impacts
+//   jx_contact, jy_contact, jm_contact, jx_water, jy_water, jm_water  an impact's impulses (N s, N m s)
+//   fx_total, fy_total, m_total                                      total
 // For a free body (a) is the hydrodynamic force that moved it (body/body_forces.hpp).
 #include <memory>
 #include <vector>
