@@ -61,6 +61,8 @@ std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer) {
         BodyForces& f = forces[b];
         f.loads = model.free_bodies().loads(b);
         // An impact's water impulse is recorded as the impulse it is (loads), not inside the step's force.
+        // (Only in a step with an impact: the record of t = 0 has no step, dt = 0.)
+        if (f.loads.water_impulse.isZero() && f.loads.water_angular_impulse == 0.0) continue;
         f.forcing -= f.loads.water_impulse / dt;
         f.forcing_torque -= f.loads.water_angular_impulse / dt;
     }
