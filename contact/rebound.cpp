@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 namespace chute {
 
@@ -11,15 +13,19 @@ namespace {
 
 Vec2 point_velocity(const BodyState& s, const Vec2& X) { return s.velocity + s.angular_velocity * perp(X - s.centre); }
 
+// -V_n'/V_n and V_t'/V_t of the contact point's velocity before and after (NaN when V_t = 0).
+std::pair<double, double> restitution(const Vec2& before, const Vec2& after, const Vec2& n) {
+    const Vec2 t = -perp(n);
+    const double Vn = before.dot(n), Vt = before.dot(t);
+    return {-after.dot(n) / Vn,
+            std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN()};
+}
+
 }  // namespace
 
 void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& after, const Vec2& n) {
-    const Vec2 t = -perp(n);
-    const double Vn = before.dot(n), Vt = before.dot(t);
     e.normal = n;
-    e.normal_restitution = -after.dot(n) / Vn;
-    e.tangential_restitution =
-        std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN();
+    std::tie(e.normal_restitution, e.tangential_restitution) = restitution(before, after, n);
     e.velocity_wet = e.velocity_after;
     e.angular_velocity_wet = e.angular_velocity_after;
     e.wet_normal_restitution = e.normal_restitution;
@@ -28,14 +34,10 @@ void set_effective_restitution(ContactEvent& e, const Vec2& before, const Vec2& 
 
 void set_wet_rebound(ContactEvent& e, const Vec2& velocity, double angular_velocity) {
     const Vec2 arm = perp(e.point - e.centre);
-    const Vec2 before = e.velocity_before + e.angular_velocity_before * arm, after = velocity + angular_velocity * arm;
-    const Vec2 n = e.normal, t = -perp(n);
-    const double Vn = before.dot(n), Vt = before.dot(t);
     e.velocity_wet = velocity;
     e.angular_velocity_wet = angular_velocity;
-    e.wet_normal_restitution = -after.dot(n) / Vn;
-    e.wet_tangential_restitution =
-        std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN();
+    std::tie(e.wet_normal_restitution, e.wet_tangential_restitution) =
+        restitution(e.velocity_before + e.angular_velocity_before * arm, velocity + angular_velocity * arm, e.normal);
 }
 
 ContactEvent rebound(BodyState& s, const Vec2& X, const Vec2& n, const RigidInertia& m, const ContactConfig& c) {
