@@ -7,7 +7,7 @@
 
 namespace chute {
 
-enum class DeltaKernel { roma3, peskin4 };
+enum class DeltaKernel { roma3, peskin4, roma3_smoothed };
 
 struct IbmConfig {
     DeltaKernel kernel = DeltaKernel::roma3;

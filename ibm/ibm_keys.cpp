@@ -13,9 +13,11 @@ std::vector<CaseKey> ibm_keys() {
         {.path = "numerics.ibm.kernel",
          .type = K::choice,
          .default_value = "roma3",
-         .choices = {"roma3", "peskin4"},
-         .meaning = "Regularised delta kernel: `roma3` (Roma, Peskin & Berger 1999; 3 points per direction) "
-                    "or `peskin4` (Peskin 2002; 4 points, smoother, thicker interface)."},
+         .choices = {"roma3", "peskin4", "roma3_smoothed"},
+         .meaning =
+             "Regularised delta kernel: `roma3` (Roma, Peskin & Berger 1999; 3 points per direction) "
+             "or `peskin4` (Peskin 2002; 4 points, smoother, thicker interface), or `roma3_smoothed` (Yang et al. "
+             "2009; roma3 averaged over a cell: 4 points, continuous first derivative)."},
         {.path = "numerics.ibm.forcing_iterations",
          .type = K::integer,
          .default_value = "3",
@@ -71,8 +73,9 @@ std::vector<CaseKey> ibm_keys() {
 
 IbmConfig read_ibm(const CaseReader& r) {
     IbmConfig m;
-    m.kernel = r.choice<DeltaKernel>("numerics.ibm.kernel",
-                                     {{"roma3", DeltaKernel::roma3}, {"peskin4", DeltaKernel::peskin4}});
+    m.kernel = r.choice<DeltaKernel>("numerics.ibm.kernel", {{"roma3", DeltaKernel::roma3},
+                                                             {"peskin4", DeltaKernel::peskin4},
+                                                             {"roma3_smoothed", DeltaKernel::roma3_smoothed}});
     m.forcing_iterations = static_cast<int>(r.integer("numerics.ibm.forcing_iterations"));
     m.marker_spacing = r.number("numerics.ibm.marker_spacing");
     m.retraction = r.number("numerics.ibm.retraction");
