@@ -103,6 +103,20 @@ TEST(Restart, StopAndRestartEqualsStraightRun) {
     }
 }
 
+// A fixed step that divides the end time ends in end / dt steps of that length: the summed time lands within
+// round-off of the end, and that remainder is one step, not two halves (a step change jolts the force (a)).
+TEST(Run, FixedStepEndsOnTheEndTimeInWholeSteps) {
+    CaseConfig config = parse_case_text(std::string(kChannel) + "\n");
+    config.fixed_dt = 0.02;
+    config.end_time = 0.28;  // 14 steps of 0.02: the first 13 sum to 0.26 - 5e-17, leaving 0.02 + 5e-17
+    RunOptions options;
+    options.quiet = true;
+    options.out_dir = scratch("fixed_step");
+    const RunSummary summary = run_simulation(config, options, MPI_COMM_WORLD);
+    EXPECT_EQ(summary.steps, 14);
+    EXPECT_NEAR(summary.time, 0.28, 1e-12);
+}
+
 // The same with a free body that hits the bed (four impacts, then rest) after the restart: its state, held
 // accelerations, contact state and enclosed fluid momentum are in the checkpoint, so its time series, its contact log
 // and the fields match the straight run bit for bit.
