@@ -10,10 +10,10 @@ namespace chute {
 enum class DeltaKernel { roma3, peskin4, roma3_smoothed };
 
 struct IbmConfig {
-    DeltaKernel kernel = DeltaKernel::roma3;
-    int forcing_iterations = 3;                        // multi-direct forcing (Breugem 2012)
+    DeltaKernel kernel = DeltaKernel::roma3_smoothed;  // Yang et al. 2009: no cell-crossing ripple
+    int forcing_iterations = 10;                       // multi-direct forcing (Breugem 2012)
     double marker_spacing = 1.0;                       // in grid cells
-    double retraction = 0.3;                           // markers moved inwards by this many cells
+    double retraction = 0.43;                          // markers moved inwards by this many cells (DFG 2D-1 drag)
     int volume_ramp = 2;                               // cells over which the volume forcing fades in (0: a switch)
     std::vector<double> stress_probes{2.5, 3.5, 4.5};  // probe distances along the normal, in cells
     double virtual_mass = 1.0;                         // C_V of the free-body update (Schwarz et al. 2015)

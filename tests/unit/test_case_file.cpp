@@ -515,8 +515,9 @@ TEST(CaseFile, BodiesReadBackWithUnitsConverted) {
     // Reference length defaults to the extent across x: the rotated rectangle is 0.2 high.
     EXPECT_NEAR(b.reference_length, 0.2, 1e-12);
     EXPECT_EQ(b.reference_velocity, 1.0);
-    EXPECT_EQ(c.ibm.kernel, DeltaKernel::roma3);
-    EXPECT_EQ(c.ibm.forcing_iterations, 3);
+    EXPECT_EQ(c.ibm.kernel, DeltaKernel::roma3_smoothed);
+    EXPECT_EQ(c.ibm.forcing_iterations, 10);
+    EXPECT_EQ(c.ibm.retraction, 0.43);
 }
 
 TEST(CaseFile, BodyErrorsNameTheKey) {
