@@ -40,12 +40,16 @@ chute_validation(dfg_2d1 FixedBodies.SchaeferTurek2D1 2 "validation")
 # 40 (order 0.67, t = 3.5): its viscous part converges at first order with the outer flow. Not yet re-run at
 # D/h 80. `ctest -L slow -LE known_failure` runs the rest of the slow suite.
 chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "validation;slow;known_failure")
+# Known failure, kept as the record of the forces issue's item 5 (docs/validation.md, DFG 2D-2): the unsteady lift
+# is 6 % low at D/h 40.
+chute_validation(dfg_2d2 FixedBodies.SchaeferTurek2D2 2 "validation;slow;known_failure")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnInclinedPlane 2 "validation")
-# Known failures, kept as the record of issue 15's targets (docs/validation.md, Cell-crossing ripple): the
-# moving body's force ripples 7.4 % at the cell-crossing frequency (target < 1 %).
-chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow;known_failure")
+# The square's pair passes since the smoothed kernel with 10 iterations (moving / fixed 1.0094, ripple 0.97 %).
+# The study block's is a known failure, kept as the record (docs/validation.md, The smoothed kernel): ripple
+# 0.91 % and (b) moving / fixed 0.9999, but (a) moving / fixed 1.0514.
+chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow")
 chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAtTerminalSpeed 2 "validation;slow;known_failure")
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
