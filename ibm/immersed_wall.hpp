@@ -7,8 +7,8 @@
 // -2 h < d < Delta (h the cell size, Delta = turbulence.image_distance cells) form the near-wall band.
 // For each band cell the flow is sampled at its image point x_s + Delta n, where x_s = x - d n is the
 // nearest surface point and n the outward normal: beyond the reach of the forcing, which smears the
-// velocity over 1.5 cells each side of the surface. From k and the tangential velocity relative to the
-// body there the model's wall law (turbulence/wall_function.hpp, y = Delta) gives
+// velocity up to the kernel's support less the retraction outside the surface (1.57 cells by default). From k and the
+// tangential velocity relative to the body there the model's wall law (turbulence/wall_function.hpp, y = Delta) gives
 //   nu_w   the wall eddy viscosity; the band cells get nu_t >= nu_w, so the momentum flux through the
 //          band, (nu + nu_w) U_t / Delta, is the log-law wall shear (the forcing keeps no-slip at the
 //          surface, so without it the shear would be the unresolved nu U_t / Delta)

@@ -5,9 +5,10 @@
 //   F = depth * sum_l ( -p_l n_l + tau_l ) ds_l,        M = depth * sum_l (X_l - x_c) x ( ... ) ds_l
 //
 // On the immersed boundary the fields are smeared within the forcing's reach of the surface (kernel support
-// 1.5 cells about markers retracted 0.3 cells: 1.2 cells out), and a bilinear probe reads grid points up to
-// one cell nearer the surface than itself; so they are sampled beyond 2.2 cells, at probes
-// X_l + d_k h n_l (numerics.ibm.stress_probes, default d = 2.5, 3.5, 4.5 cells; h the local spacing), bilinear
+// less the retraction: 2 - 0.43 = 1.57 cells out with the default roma3_smoothed, 1.2 with roma3 and 0.3), and a
+// bilinear probe reads grid points up to one cell nearer the surface than itself; so they are sampled beyond
+// the reach plus a cell (the first default probe, 2.5 cells, reads points from 1.5 cells: at the smear's edge), at
+// probes X_l + d_k h n_l (numerics.ibm.stress_probes, default d = 2.5, 3.5, 4.5 cells; h the local spacing), bilinear
 // interpolation across MPI patches, and fitted by least squares in y = d h (fit_weights):
 //   pressure   p(y) = p_l + (dp/dn) y + c y^2, with the wall-normal gradient the momentum equation sets at a
 //              no-slip wall (Gresho & Sani 1987, IJNMF 7:1111, eq. 8):
