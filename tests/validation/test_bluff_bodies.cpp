@@ -8,45 +8,11 @@
 
 #include "body_run.hpp"
 #include "euler_lagrange.hpp"
+#include "shedding.hpp"
 #include "steady_state.hpp"
 
 using namespace chute;
 using namespace chute::validation;
-
-namespace {
-
-struct Shedding {
-    double cd_mean, cd_mean_surface, cl_amplitude, cl_rms, strouhal;
-};
-
-// Statistics of the forcing-based coefficients over t in [t0, end] (U = D = rho = 1, so C = 2 F).
-Shedding shedding(const BodyRun& run, double t0) {
-    std::vector<double> t, cl, cd, cds;
-    for (const auto& h : run.history)
-        if (h.t >= t0) {
-            t.push_back(h.t);
-            cd.push_back(2.0 * h.f.forcing.x());
-            cds.push_back(2.0 * (h.f.surface.pressure.x() + h.f.surface.viscous.x()));
-            cl.push_back(2.0 * h.f.forcing.y());
-        }
-    Shedding s{};
-    const double n = static_cast<double>(t.size());
-    for (std::size_t k = 0; k < t.size(); ++k) s.cd_mean += cd[k] / n, s.cd_mean_surface += cds[k] / n;
-    double mean_cl = 0.0;
-    for (double v : cl) mean_cl += v / n;
-    for (double v : cl) s.cl_rms += (v - mean_cl) * (v - mean_cl) / n;
-    s.cl_rms = std::sqrt(s.cl_rms);
-    s.cl_amplitude = 0.5 * (*std::max_element(cl.begin(), cl.end()) - *std::min_element(cl.begin(), cl.end()));
-    // Period from the upward zero crossings of C_L - mean (linear interpolation between samples).
-    std::vector<double> up;
-    for (std::size_t k = 1; k < t.size(); ++k)
-        if (cl[k - 1] - mean_cl < 0.0 && cl[k] - mean_cl >= 0.0)
-            up.push_back(t[k - 1] + (t[k] - t[k - 1]) * (mean_cl - cl[k - 1]) / (cl[k] - cl[k - 1]));
-    s.strouhal = up.size() >= 2 ? (up.size() - 1) / (up.back() - up.front()) : NAN;
-    return s;
-}
-
-}  // namespace
 
 // Re = 40, steady (Tritton 1959; Coutanceau & Bouard 1977; Fornberg 1980: VALIDATION.md). D/h = 32, run to
 // t = 100 D/U. C_D in 1.50-1.58; wake length L/D (back of the cylinder to the end of the recirculation on the
@@ -88,7 +54,7 @@ TEST(BluffBodies, CylinderRe100) {
     const CaseConfig c = load_case(kExamples + "cylinder_re100/case.yaml");
     BodyRun run(c, MPI_COMM_WORLD);
     run.run_to(c.end_time);
-    const Shedding s = shedding(run, 120.0);
+    const Shedding s = shedding(run, 120.0, 0.5, 1.0);
     if (root())
         std::printf("cylinder Re 100: mean C_D forcing %.4f surface %.4f, C_L amplitude %.4f, St %.4f\n", s.cd_mean,
                     s.cd_mean_surface, s.cl_amplitude, s.strouhal);
@@ -109,7 +75,7 @@ TEST(BluffBodies, SquareCylinderRe100) {
     const CaseConfig c = load_case(kExamples + "square_cylinder_re100/case.yaml");
     BodyRun run(c, MPI_COMM_WORLD);
     run.run_to(c.end_time);
-    const Shedding s = shedding(run, 120.0);
+    const Shedding s = shedding(run, 120.0, 0.5, 1.0);
     if (root())
         std::printf("square cylinder Re 100: mean C_D forcing %.4f surface %.4f, C_L rms %.4f, St %.4f\n", s.cd_mean,
                     s.cd_mean_surface, s.cl_rms, s.strouhal);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "body_run.hpp"
+#include "shedding.hpp"
 
 using namespace chute;
 using namespace chute::validation;
@@ -23,12 +24,15 @@ struct Coefficients {
 // recirculation) growing by 3 % per cell to the inlet and outlet. Run to t = 8 s, coefficients averaged over
 // the last 0.5 s. The start-up leaves a slowly decaying oscillation in C_L (period ~2 s): at t = 3 s C_L still
 // reads 0.0150 against 0.0117 at t = 8-12 s, while C_D has settled to 2e-4 (docs/validation.md).
+CaseConfig dfg_case(const std::string& example, int cells_per_d) {
+    return load_case(kExamples + example, {"domain.x={start: 0.0, end: 2.2, spacing: clustered, core: [0.05, 0.6], "
+                                           "core_cells: " +
+                                               std::to_string(55 * cells_per_d / 10) + ", ratio: 1.03}",
+                                           "domain.y.cells=" + std::to_string(41 * cells_per_d / 10)});
+}
+
 Coefficients dfg_2d1(int cells_per_d, double t_end) {
-    const CaseConfig c = load_case(kExamples + "schaefer_turek_2d1/case.yaml",
-                                   {"domain.x={start: 0.0, end: 2.2, spacing: clustered, core: [0.05, 0.6], "
-                                    "core_cells: " +
-                                        std::to_string(55 * cells_per_d / 10) + ", ratio: 1.03}",
-                                    "domain.y.cells=" + std::to_string(41 * cells_per_d / 10)});
+    const CaseConfig c = dfg_case("schaefer_turek_2d1/case.yaml", cells_per_d);
     BodyRun run(c, MPI_COMM_WORLD);
     run.run_to(t_end);
     const double q = 0.5 * 1.0 * 0.2 * 0.2 * 0.1;  // 0.5 rho U_mean^2 D (depth 1)
@@ -99,41 +103,16 @@ TEST(FixedBodies, SchaeferTurek2D1Convergence) {
 
 namespace {
 
-struct Shedding {
-    double cd_max, cl_max, cl_min, strouhal;
-};
-
-// Schäfer & Turek (1996), DFG benchmark 2D-2 (examples/schaefer_turek_2d2): D/h = cells_per_d as for 2D-1; from
-// rest to t = 8 s, statistics of force (a) over t = 6-8 s (6 periods; periodic from t = 5 s). St from the lift's
-// mean up-crossings (f D / U_mean, U_mean = 1).
+// Schäfer & Turek (1996), DFG benchmark 2D-2 (examples/schaefer_turek_2d2): the 2D-1 grid at D/h = cells_per_d;
+// from rest to t = 8 s, statistics of force (a) over t = 6-8 s (6 periods; periodic from t = 5 s).
 Shedding dfg_2d2(int cells_per_d) {
-    const CaseConfig c = load_case(kExamples + "schaefer_turek_2d2/case.yaml",
-                                   {"domain.x={start: 0.0, end: 2.2, spacing: clustered, core: [0.05, 0.6], "
-                                    "core_cells: " +
-                                        std::to_string(55 * cells_per_d / 10) + ", ratio: 1.03}",
-                                    "domain.y.cells=" + std::to_string(41 * cells_per_d / 10)});
-    BodyRun run(c, MPI_COMM_WORLD);
+    BodyRun run(dfg_case("schaefer_turek_2d2/case.yaml", cells_per_d), MPI_COMM_WORLD);
     run.run_to(8.0);
     const double q = 0.5 * 1.0 * 1.0 * 1.0 * 0.1;  // 0.5 rho U_mean^2 D (depth 1)
-    std::vector<double> t, cl;
-    Shedding s{-1e300, -1e300, 1e300, 0.0};
-    for (const ForceSample& h : run.history) {
-        if (h.t < 6.0) continue;
-        s.cd_max = std::max(s.cd_max, h.f.forcing.x() / q);
-        s.cl_max = std::max(s.cl_max, h.f.forcing.y() / q);
-        s.cl_min = std::min(s.cl_min, h.f.forcing.y() / q);
-        t.push_back(h.t);
-        cl.push_back(h.f.forcing.y() / q);
-    }
-    const double mid = 0.5 * (s.cl_max + s.cl_min);
-    std::vector<double> ups;  // times of the up-crossings of the mid value, interpolated
-    for (std::size_t k = 0; k + 1 < t.size(); ++k)
-        if (cl[k] < mid && cl[k + 1] >= mid)
-            ups.push_back(t[k] + (mid - cl[k]) * (t[k + 1] - t[k]) / (cl[k + 1] - cl[k]));
-    if (ups.size() >= 2) s.strouhal = (ups.size() - 1) / (ups.back() - ups.front()) * 0.1 / 1.0;
+    const Shedding s = shedding(run, 6.0, q, 0.1 / 1.0);
     if (run.solver.grid().rank() == 0)
         std::printf("DFG 2D-2, D/h = %d: C_D max %.4f, C_L max %.4f, min %.4f (amplitude %.4f), St %.4f\n", cells_per_d,
-                    s.cd_max, s.cl_max, s.cl_min, 0.5 * (s.cl_max - s.cl_min), s.strouhal);
+                    s.cd_max, s.cl_max, s.cl_min, s.cl_amplitude, s.strouhal);
     return s;
 }
 
