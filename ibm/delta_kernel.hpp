@@ -1,12 +1,12 @@
 #pragma once
 // Regularised delta kernels phi(r), r the distance in grid spacings. The 2D kernel is phi(rx) phi(ry) / h^2.
 //
-//   roma3   (Roma, Peskin & Berger 1999, JCP 153:509), support |r| < 1.5: the default; 3 points per
-//           direction, the kernel of Uhlmann (2005) and Breugem (2012).
+//   roma3   (Roma, Peskin & Berger 1999, JCP 153:509), support |r| < 1.5: 3 points per direction, the
+//           kernel of Uhlmann (2005) and Breugem (2012).
 //   peskin4 (Peskin 2002, Acta Numerica 11:479, eq. 6.27), support |r| < 2.
-//   roma3_smoothed (Yang, Zhang, Li & Balaras 2009, JCP 228:7821, eq. 21): roma3 convolved with a top hat
-//           of one cell, support |r| < 2. Its first derivative is continuous, which is what damps the force
-//           oscillations of a body moving across the grid in that paper.
+//   roma3_smoothed (Yang, Zhang, Li & Balaras 2009, JCP 228:7821, their smoothed 3-point kernel), the default:
+//           roma3 convolved with a top hat of one cell, support |r| < 2. Its first derivative is continuous,
+//           which is what damps the force oscillations of a body moving across the grid in that paper.
 // All three satisfy sum_k phi(r - k) = 1 and sum_k (r - k) phi(r - k) = 0 (exact interpolation of linear
 // fields on uniform grids).
 #include <algorithm>

@@ -31,7 +31,7 @@ TEST(DeltaKernel, PartitionOfUnityAndZeroFirstMoment) {
 }
 
 TEST(DeltaKernel, SmoothedRomaIsRomaAveragedOverACell) {
-    // Yang et al. (2009), eq. 21: the closed form equals the integral of roma3 over [r - 1/2, r + 1/2]
+    // Yang et al. (2009), smoothed 3-point kernel: the closed form equals the integral of roma3 over [r - 1/2, r + 1/2]
     // (midpoint rule, 20000 intervals: error ~1e-9 where roma3's kinks fall inside the interval).
     for (double r = 0.0; r <= 2.0; r += 0.0625) {
         const int n = 20000;
