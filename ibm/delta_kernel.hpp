@@ -11,6 +11,7 @@
 // fields on uniform grids).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "ibm_config.hpp"
 
@@ -20,7 +21,7 @@ inline double kernel_support(DeltaKernel k) { return k == DeltaKernel::roma3 ? 1
 
 // roma3 smoothed: phi(r) = integral of roma3 over [r - 1/2, r + 1/2], in closed form.
 inline double roma3_smoothed(double r) {
-    const double s3 = std::sqrt(3.0), pi = 3.14159265358979323846;
+    const double s3 = std::sqrt(3.0), pi = std::numbers::pi;
     if (r <= 1.0)
         return 17.0 / 48.0 + s3 * pi / 108.0 + r / 4.0 - r * r / 4.0 +
                (1.0 - 2.0 * r) / 16.0 * std::sqrt(-12.0 * r * r + 12.0 * r + 1.0) -

@@ -106,7 +106,7 @@ TEST(Restart, StopAndRestartEqualsStraightRun) {
 // A fixed step that divides the end time ends in end / dt steps of that length: the summed time lands within
 // round-off of the end, and that remainder is one step, not two halves (a step change jolts the force (a)).
 TEST(Run, FixedStepEndsOnTheEndTimeInWholeSteps) {
-    CaseConfig config = parse_case_text(std::string(kChannel) + "\n");
+    CaseConfig config = parse_case_text(kChannel);
     config.fixed_dt = 0.02;
     config.end_time = 0.28;  // 14 steps of 0.02: the first 13 sum to 0.26 - 5e-17, leaving 0.02 + 5e-17
     RunOptions options;
