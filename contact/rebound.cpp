@@ -13,12 +13,13 @@ namespace {
 
 Vec2 point_velocity(const BodyState& s, const Vec2& X) { return s.velocity + s.angular_velocity * perp(X - s.centre); }
 
-// -V_n'/V_n and V_t'/V_t of the contact point's velocity before and after (NaN when V_t = 0).
+// -V_n'/V_n and V_t'/V_t of the contact point's velocity before and after (NaN when V_t = 0: under a millionth of
+// V_n, a body that falls straight carries only round-off across, and a ratio of round-off means nothing).
 std::pair<double, double> restitution(const Vec2& before, const Vec2& after, const Vec2& n) {
     const Vec2 t = -perp(n);
     const double Vn = before.dot(n), Vt = before.dot(t);
     return {-after.dot(n) / Vn,
-            std::abs(Vt) > 1e-12 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN()};
+            std::abs(Vt) > 1e-6 * std::abs(Vn) ? after.dot(t) / Vt : std::numeric_limits<double>::quiet_NaN()};
 }
 
 }  // namespace

@@ -50,8 +50,15 @@ double FreeBodies::max_dt(double cfl) const {
     return dt;
 }
 
+double remaining_change(double change, double previous) {
+    if (previous <= 0.0) return change;
+    const double r = std::min(change / previous, 0.99);
+    return change * std::max(1.0, r / (1.0 - r));
+}
+
 void FreeBodies::predict(double t, double dt) {
     impulsive_ = false;
+    corrections_ = 0;
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         f.start = body.state();
@@ -75,6 +82,7 @@ void FreeBodies::predict(double t, double dt) {
 
 void FreeBodies::correct(double t, double dt, const Velocity& vel) {
     events_.clear();
+    previous_change_ = corrections_++ > 0 ? coupling_change_ : -1.0;
     coupling_change_ = 0.0;
     const double cv = settings_.virtual_mass;
     const Vec2 g = settings_.gravity;

@@ -35,17 +35,19 @@ std::vector<CaseKey> rigidbody_keys() {
                     "that the fluid the body sets in motion (its added mass) moves within the step."},
         {.path = "numerics.coupling.max_passes",
          .type = K::integer,
-         .default_value = "20",
+         .default_value = "200",
          .min = at_least(1),
-         .max = at_most(200),
-         .meaning = "Most forcing and projection passes in one step; 1 is the explicit (weak) coupling."},
+         .max = at_most(1000),
+         .meaning = "Most forcing and projection passes in one step; 1 is the explicit (weak) coupling. An impact "
+                    "takes some 50-100 to meet the tolerance; a step stopped here short of it is noted once."},
         {.path = "numerics.coupling.tolerance",
          .type = K::number,
          .default_value = "0.01",
          .min = above(0),
-         .meaning = "Such a step passes again while the last pass moved a free body's acceleration by more than "
-                    "this fraction of its net weight's acceleration |m - m_f| g / m, or an impact's water "
-                    "impulse by more than this fraction of itself."},
+         .meaning = "Such a step passes again while the passes still to come would move a free body's "
+                    "acceleration by more than this fraction of its net weight's acceleration |m - m_f| g / m, "
+                    "or an impact's water impulse by more than this fraction of itself; estimated from the "
+                    "last two passes' changes d as d r / (1 - r), r their ratio (the passes converge slowly)."},
     };
 }
 

@@ -51,6 +51,12 @@ std::optional<std::string> HealthCheck::warning(const Model& model, const StepSt
                "scale (check turbulence.* and fluid.viscosity; noted once)";
         return msg.str();
     }
+    if (!warned_coupling_ && step.coupling_unconverged) {
+        warned_coupling_ = true;
+        msg << "the coupling passes stopped at numerics.coupling.max_passes short of numerics.coupling.tolerance; "
+               "part of the body's start or impact comes out as a force over the next steps (noted once)";
+        return msg.str();
+    }
     return std::nullopt;
 }
 

@@ -42,7 +42,7 @@ private:
     int poisson_max_iterations_;
     double poisson_tolerance_;
     double first_dt_ = 0.0;
-    bool warned_poisson_ = false, warned_diffusion_ = false;
+    bool warned_poisson_ = false, warned_diffusion_ = false, warned_coupling_ = false;
 };
 
 }  // namespace chute

@@ -40,6 +40,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.correct(t, dt, flow.velocity());
     }
+    stats.coupling_unconverged = free_bodies.coupling_unconverged(stats.coupling_passes);
     if (free_bodies.impact_step()) flow.forget_impulsive_pressure();
     if (KEpsilon* turbulence = model.turbulence()) {
         StageTimer::Scope timed(timer, "turbulence");
