@@ -37,7 +37,7 @@ struct StepStats {
     int diffusion_iterations = 0;  // implicit diffusion: PCG iterations of the larger component
     double poisson_residual = 0.0;
     int coupling_passes = 0;            // forcing and projection passes of the step (run/step.cpp: strong coupling)
-    bool coupling_unconverged = false;  // the passes stopped at numerics.coupling.max_passes short of the tolerance
+    bool coupling_unconverged = false;  // the passes stopped short of numerics.coupling.tolerance
 };
 
 class FlowSolver {

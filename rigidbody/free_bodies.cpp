@@ -50,10 +50,21 @@ double FreeBodies::max_dt(double cfl) const {
     return dt;
 }
 
+namespace {
+double contraction(double change, double previous) { return std::min(change / previous, 0.99); }
+}  // namespace
+
 double remaining_change(double change, double previous) {
     if (previous <= 0.0) return change;
-    const double r = std::min(change / previous, 0.99);
+    const double r = contraction(change, previous);
     return change * std::max(1.0, r / (1.0 - r));
+}
+
+double passes_to_tolerance(double change, double previous, double tolerance) {
+    const double remaining = remaining_change(change, previous);
+    if (previous <= 0.0 || remaining <= tolerance || change <= 0.0) return 0.0;
+    // remaining_change after n more passes at the ratio r is remaining r^n.
+    return std::ceil(std::log(tolerance / remaining) / std::log(contraction(change, previous)));
 }
 
 void FreeBodies::predict(double t, double dt) {

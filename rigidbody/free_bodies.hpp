@@ -42,6 +42,9 @@ namespace chute {
 // before it (previous < 0: there is none yet) as for a linearly converging sequence: change r / (1 - r), with
 // r = change / previous at most 0.99, and never less than the last change itself (FreeBodies::another_pass).
 double remaining_change(double change, double previous);
+// How many more passes the same sequence needs before remaining_change falls to `tolerance`, at the ratio of the
+// last two changes held (0 when it is there already or there is no earlier change to take a ratio from).
+double passes_to_tolerance(double change, double previous, double tolerance);
 
 // What free-body dynamics needs of a case (run/case_settings.hpp gathers it).
 struct FreeBodySettings {
@@ -81,15 +84,24 @@ public:
     // error. So a step passes again while the change still to come (remaining_change) exceeds
     // numerics.coupling.tolerance.
     double coupling_remaining() const { return remaining_change(coupling_change_, previous_change_); }
-    // Whether a step that has made `passes` passes makes another.
-    bool another_pass(int passes) const {
-        return impulsive_ && passes < settings_.coupling.max_passes &&
-               coupling_remaining() > settings_.coupling.tolerance;
+    // The ratio of two changes is a fair guide only once the first, fast passes are over (a start converges in
+    // 6-7 passes with ratios that jump about), so the rate is judged from the 10th pass on.
+    bool out_of_passes(int passes) const {
+        const int max = settings_.coupling.max_passes;
+        if (passes >= max) return true;
+        return passes >= 10 &&
+               passes + passes_to_tolerance(coupling_change_, previous_change_, settings_.coupling.tolerance) > max;
     }
-    // Whether this step's passes stopped at numerics.coupling.max_passes short of the tolerance.
+    // Whether a step that has made `passes` passes makes another: not when the passes left to max_passes cannot
+    // reach the tolerance at the rate seen (a flow far out of scale, say, whose first step would otherwise spend
+    // all of them).
+    bool another_pass(int passes) const {
+        return impulsive_ && coupling_remaining() > settings_.coupling.tolerance && !out_of_passes(passes);
+    }
+    // Whether this step's passes stopped short of the tolerance (at max_passes, or because they could not meet it
+    // within them).
     bool coupling_unconverged(int passes) const {
-        return impulsive_ && passes >= settings_.coupling.max_passes &&
-               coupling_remaining() > settings_.coupling.tolerance;
+        return impulsive_ && coupling_remaining() > settings_.coupling.tolerance && out_of_passes(passes);
     }
     // Whether a free body hit an obstacle with an impulse law in this step (its water's impulse is in the
     // step's pressure: FlowSolver::forget_impulsive_pressure).

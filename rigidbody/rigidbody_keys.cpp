@@ -39,7 +39,8 @@ std::vector<CaseKey> rigidbody_keys() {
          .min = at_least(1),
          .max = at_most(1000),
          .meaning = "Most forcing and projection passes in one step; 1 is the explicit (weak) coupling. An impact "
-                    "takes some 50-100 to meet the tolerance; a step stopped here short of it is noted once."},
+                    "takes some 90-190 to meet the tolerance. From the 10th pass on, a step whose passes left "
+                    "cannot meet it at the rate seen stops at once; a step stopped short of it is noted once."},
         {.path = "numerics.coupling.tolerance",
          .type = K::number,
          .default_value = "0.01",

@@ -53,8 +53,9 @@ std::optional<std::string> HealthCheck::warning(const Model& model, const StepSt
     }
     if (!warned_coupling_ && step.coupling_unconverged) {
         warned_coupling_ = true;
-        msg << "the coupling passes stopped at numerics.coupling.max_passes short of numerics.coupling.tolerance; "
-               "part of the body's start or impact comes out as a force over the next steps (noted once)";
+        msg << "the coupling passes stopped short of numerics.coupling.tolerance (at numerics.coupling.max_passes, "
+               "or where the passes left could not meet it at the rate seen); part of the body's start or impact "
+               "comes out as a force over the next steps (noted once)";
         return msg.str();
     }
     return std::nullopt;

@@ -30,3 +30,17 @@ TEST(Coupling, RemainingChangeIsNeverBelowTheLastChange) {
     EXPECT_DOUBLE_EQ(remaining_change(0.01, 0.1), 0.01);
     EXPECT_NEAR(remaining_change(0.05, 0.04), 0.05 * 99.0, 1e-12);
 }
+
+// The passes a geometric sequence still needs: at r = 0.9 from a remaining change of 0.09 (last change 0.01) to a
+// tolerance of 0.01, 0.09 r^n <= 0.01 takes n = 21 (0.9^21 = 0.109, 0.9^20 = 0.122).
+TEST(Coupling, PassesToToleranceCountsTheGeometricSequence) {
+    EXPECT_DOUBLE_EQ(passes_to_tolerance(0.01, 0.01 / 0.9, 0.01), 21.0);
+    EXPECT_DOUBLE_EQ(passes_to_tolerance(0.001, 0.002, 0.01), 0.0);  // there already
+    EXPECT_DOUBLE_EQ(passes_to_tolerance(0.5, -1.0, 0.01), 0.0);     // no ratio yet: pass on and see
+}
+
+// A sequence whose change does not shrink (a flow far out of scale) needs more passes than the most allowed
+// (1000): at the capped ratio 0.99 the remaining change 1e3 x 99 falls to 1e-2 in ln(1.01e-7) / ln(0.99) = 1603.
+TEST(Coupling, AChangeThatDoesNotShrinkNeedsMorePassesThanAnyBudget) {
+    EXPECT_DOUBLE_EQ(passes_to_tolerance(1e3, 1e3, 0.01), 1603.0);
+}
