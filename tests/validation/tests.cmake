@@ -36,9 +36,10 @@ chute_validation(cavity_re1000_256 Cavity.Re1000Grid256 2 "validation;slow")
 chute_validation(dfg_2d1 FixedBodies.SchaeferTurek2D1 2 "validation")
 # Known failure, kept as the record (docs/validation.md, DFG 2D-1): the surface-stress drag (b) converged at
 # order 0.83 from D/h 40 to 80 with the old probes, short of the first order the test asks. The present rule
-# (probes 2.5-4.5 cells, the wall's pressure gradient) fixed the pressure part; (b) is 5.3895 / 5.4604 at D/h 20 /
-# 40 (order 0.67, t = 3.5): its viscous part converges at first order with the outer flow. Not yet re-run at
-# D/h 80. `ctest -L slow -LE known_failure` runs the rest of the slow suite.
+# (probes 2.5-4.5 cells, the wall's pressure gradient) fixed the pressure part. With the smoothed kernel and
+# converged forcing (2026-11-24) (a) is in the band at D/h 20, 40 and 80 and (b) reads 5.4491 / 5.4948 / 5.5290
+# (errors 0.130 / 0.085 / 0.0505: closer than before, but order 0.75 from 40 to 80; the viscous part still rises).
+# `ctest -L slow -LE known_failure` runs the rest of the slow suite.
 chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "validation;slow;known_failure")
 # Known failure, kept as the record of the forces issue's item 5 (docs/validation.md, DFG 2D-2): the unsteady lift
 # is 6 % low at D/h 40.
