@@ -62,14 +62,14 @@ double remaining_change(double change, double previous) {
 
 double passes_to_tolerance(double change, double previous, double tolerance) {
     const double remaining = remaining_change(change, previous);
-    if (previous <= 0.0 || remaining <= tolerance || change <= 0.0) return 0.0;
+    if (previous <= 0.0 || remaining <= tolerance) return 0.0;
     // remaining_change after n more passes at the ratio r is remaining r^n.
     return std::ceil(std::log(tolerance / remaining) / std::log(contraction(change, previous)));
 }
 
 void FreeBodies::predict(double t, double dt) {
     impulsive_ = false;
-    corrections_ = 0;
+    coupling_change_ = -1.0;  // no correct() yet in this step
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         f.start = body.state();
@@ -93,7 +93,7 @@ void FreeBodies::predict(double t, double dt) {
 
 void FreeBodies::correct(double t, double dt, const Velocity& vel) {
     events_.clear();
-    previous_change_ = corrections_++ > 0 ? coupling_change_ : -1.0;
+    previous_change_ = coupling_change_;
     coupling_change_ = 0.0;
     const double cv = settings_.virtual_mass;
     const Vec2 g = settings_.gravity;

@@ -83,15 +83,6 @@ public:
     // 0.98 over an impact's first 60 passes, docs/validation.md): a small change of the last pass is not a small
     // error. So a step passes again while the change still to come (remaining_change) exceeds
     // numerics.coupling.tolerance.
-    double coupling_remaining() const { return remaining_change(coupling_change_, previous_change_); }
-    // The ratio of two changes is a fair guide only once the first, fast passes are over (a start converges in
-    // 6-7 passes with ratios that jump about), so the rate is judged from the 10th pass on.
-    bool out_of_passes(int passes) const {
-        const int max = settings_.coupling.max_passes;
-        if (passes >= max) return true;
-        return passes >= 10 &&
-               passes + passes_to_tolerance(coupling_change_, previous_change_, settings_.coupling.tolerance) > max;
-    }
     // Whether a step that has made `passes` passes makes another: not when the passes left to max_passes cannot
     // reach the tolerance at the rate seen (a flow far out of scale, say, whose first step would otherwise spend
     // all of them).
@@ -120,6 +111,15 @@ public:
     void restore(const std::filesystem::path& checkpoint);
 
 private:
+    double coupling_remaining() const { return remaining_change(coupling_change_, previous_change_); }
+    // The ratio of two changes is a fair guide only once the first, fast passes are over (a start converges in
+    // 6-7 passes with ratios that jump about), so the rate is judged from the 10th pass on.
+    bool out_of_passes(int passes) const {
+        const int max = settings_.coupling.max_passes;
+        if (passes >= max) return true;
+        return passes >= 10 &&
+               passes + passes_to_tolerance(coupling_change_, previous_change_, settings_.coupling.tolerance) > max;
+    }
     struct Free {
         std::size_t index = 0;  // in the run's bodies
         RigidInertia inertia;
@@ -142,9 +142,8 @@ private:
     std::vector<Free> free_;
     std::vector<BodyLoads> loads_;
     std::vector<ContactEvent> events_;
-    double coupling_change_ = 0.0;   // how far the last correct() moved the update, in its scales
+    double coupling_change_ = 0.0;   // how far the last correct() moved the update, in its scales (-1: none yet)
     double previous_change_ = -1.0;  // the same for the correct() before it in this step (-1: none yet)
-    int corrections_ = 0;            // correct() calls in this step
     bool impulsive_ = false;         // a free body starts or hits an obstacle in this step
 };
 
