@@ -13,10 +13,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 #include "carriers.hpp"
 #include "case_file.hpp"
+#include "csv_column.hpp"
 #include "simulation.hpp"
 
 using namespace chute;
@@ -149,19 +151,8 @@ std::pair<std::vector<double>, int> last_row(const fs::path& file) {
 
 // The sum of a column of a CSV file with a header.
 double column_sum(const fs::path& file, const std::string& name) {
-    std::ifstream in(file);
-    std::string line, cell;
-    std::getline(in, line);
-    std::stringstream header(line);
-    int column = 0;
-    while (std::getline(header, cell, ',') && cell != name) ++column;
-    double sum = 0.0;
-    while (std::getline(in, line)) {
-        std::stringstream row(line);
-        for (int k = 0; k <= column && std::getline(row, cell, ','); ++k)
-            if (k == column) sum += std::stod(cell);
-    }
-    return sum;
+    const std::vector<double> values = csv_column(file, name);
+    return std::accumulate(values.begin(), values.end(), 0.0);
 }
 
 }  // namespace

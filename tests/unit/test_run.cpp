@@ -15,6 +15,7 @@
 #include "case_file.hpp"
 #include "checkpoint.hpp"
 #include "chute_process.hpp"
+#include "csv_column.hpp"
 #include "hdf5_file.hpp"
 #include "simulation.hpp"
 
@@ -133,18 +134,11 @@ TEST(Run, StepShrinksGraduallyToLandOnTheEndTime) {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     if (rank != 0) return;
-    std::istringstream rows(read_text(options.out_dir / "timeseries.csv"));
-    std::string row;
-    std::getline(rows, row);  // header: t,step,dt,...
-    std::vector<double> dts;
-    while (std::getline(rows, row)) {
-        std::istringstream cells(row);
-        std::string t, step, dt;
-        std::getline(cells, t, ',');
-        std::getline(cells, step, ',');
-        std::getline(cells, dt, ',');
-        if (std::stoi(step) > 0) dts.push_back(std::stod(dt));
-    }
+    const std::vector<double> steps = csv_column(options.out_dir / "timeseries.csv", "step");
+    const std::vector<double> all_dts = csv_column(options.out_dir / "timeseries.csv", "dt");
+    std::vector<double> dts;  // the steps' (the row of t = 0 has none)
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        if (steps[k] > 0) dts.push_back(all_dts[k]);
     ASSERT_EQ(dts.size(), 15u);
     for (std::size_t k = 1; k < dts.size(); ++k) EXPECT_GE(dts[k], 0.9 * dts[k - 1]) << "step " << k + 1;
     EXPECT_NEAR(dts.back(), 0.1915 / 10.0, 1e-12);
