@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "convection.hpp"
 #include "diffusion.hpp"
@@ -60,9 +61,20 @@ void FlowSolver::set_initial_condition() {
     refresh_ghosts();
 }
 
+void FlowSolver::fill_boundaries(Velocity& vel) const {
+    bc_->apply(vel);
+    if (solid_) solid_->fill(vel);
+}
+
+void FlowSolver::set_solid_cells(const SolidCells* solid) {
+    solid_ = solid;
+    poisson_->set_fluid_cells(fluid_cells(), solid_ ? solid_->fluid_cell_count() : grid_->global_cells());
+    refresh_ghosts();
+}
+
 void FlowSolver::refresh_ghosts() {
     halo_->exchange(vel_);
-    bc_->apply(vel_);
+    fill_boundaries(vel_);
     halo_->exchange(p_);
     bc_->apply_pressure(p_);
 }
@@ -185,6 +197,9 @@ double FlowSolver::predict(double dt) {
     predict_velocity(dt, r);
     bc_->set_outflow(vel_, star_, dt);
     if (implicit_now_) {
+        if (fluid_cells())
+            throw std::invalid_argument(
+                "implicit diffusion is not available with a body-fitted body yet: set numerics.diffusion: explicit");
         if (!implicit_) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
         halo_->exchange(star_);
         bc_->apply(star_);
@@ -233,6 +248,7 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
     {
         StageTimer::Scope timed(timer_, "poisson");
         halo_->exchange(star_);
+        if (solid_) solid_->fill(star_);  // the sides' normal velocity: the hole's Neumann condition
         divergence(*grid_, star_, 1.0 / dt, source_);
         const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(dt));
         stats.poisson_iterations = ps.iterations;
@@ -254,7 +270,7 @@ void FlowSolver::publish_velocity() {
     StageTimer::Scope timed(timer_, "correction");
     std::swap(vel_, star_);
     halo_->exchange(vel_);
-    bc_->apply(vel_);
+    fill_boundaries(vel_);
 }
 
 }  // namespace chute

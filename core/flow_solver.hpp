@@ -26,6 +26,7 @@
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"
 #include "poisson_solver.hpp"
+#include "solid_cells.hpp"
 #include "stage_timer.hpp"
 #include "viscous_stress.hpp"
 
@@ -93,6 +94,12 @@ public:
     // Whether the last step's diffusion was implicit (checkpoints carry it: `auto` switches with hysteresis).
     bool implicit_diffusion() const { return implicit_now_; }
     void restore(long step, double time, double dt_previous, bool implicit_diffusion = false);
+    // Cells taken out of the fluid (a body-fitted hole; null: none). The solver fills their faces whenever it
+    // fills the boundaries' ghosts and leaves them out of the pressure problem; call again after the blocks
+    // changed cells (core/grid/solid_cells.hpp). The object must outlive the solver or the next call.
+    void set_solid_cells(const SolidCells* solid);
+    const SolidCells* solid_cells() const { return solid_; }
+    const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : nullptr; }
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
@@ -109,6 +116,7 @@ private:
     double poisson_residual_floor(double dt) const;               // absolute tolerance of the solve
     void solve_and_correct(StepStats& stats);                     // star_ projected, p_ += phi_
     void publish_velocity();                                      // vel_ <- star_, halos and boundaries
+    void fill_boundaries(Velocity& vel) const;                    // domain boundaries, then solid cells
 
     FlowConfig config_;
     std::unique_ptr<Grid> grid_;
@@ -127,6 +135,7 @@ private:
     double time_ = 0.0, dt_previous_ = 0.0;
     long step_ = 0;
     StageTimer* timer_ = nullptr;
+    const SolidCells* solid_ = nullptr;
 };
 
 Axis build_axis(const AxisConfig& c, bool periodic);

@@ -9,7 +9,8 @@
 namespace chute {
 
 FlowHealth flow_health(const FlowSolver& flow) {
-    return {kinetic_energy(flow.grid(), flow.velocity()), max_divergence(flow.grid(), flow.velocity())};
+    return {kinetic_energy(flow.grid(), flow.velocity(), flow.fluid_cells()),
+            max_divergence(flow.grid(), flow.velocity(), flow.fluid_cells())};
 }
 
 std::optional<std::string> HealthCheck::problem(const Model& model, const StepStats& step, const FlowHealth& health) {

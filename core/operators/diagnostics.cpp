@@ -9,7 +9,7 @@
 
 namespace chute {
 
-double kinetic_energy(const Grid& grid, const Velocity& vel) {
+double kinetic_energy(const Grid& grid, const Velocity& vel, const Field2D* fluid) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     double e = 0.0;
@@ -17,16 +17,18 @@ double kinetic_energy(const Grid& grid, const Velocity& vel) {
         for (int i = 0; i < grid.nx(); ++i) {
             const double uc = 0.5 * (vel.u(i, j) + vel.u(i + 1, j));
             const double vc = 0.5 * (vel.v(i, j) + vel.v(i, j + 1));
+            if (fluid && (*fluid)(i, j) == 0.0) continue;
             e += 0.5 * (uc * uc + vc * vc) * X.w(i) * Y.w(j);
         }
     MPI_Allreduce(MPI_IN_PLACE, &e, 1, MPI_DOUBLE, MPI_SUM, grid.comm());
     return e;
 }
 
-double max_divergence(const Grid& grid, const Velocity& vel) {
+double max_divergence(const Grid& grid, const Velocity& vel, const Field2D* fluid) {
     double m = 0.0;
     for (int j = 0; j < grid.ny(); ++j)
-        for (int i = 0; i < grid.nx(); ++i) m = std::max(m, std::abs(cell_divergence(grid, vel, i, j)));
+        for (int i = 0; i < grid.nx(); ++i)
+            if (!fluid || (*fluid)(i, j) != 0.0) m = std::max(m, std::abs(cell_divergence(grid, vel, i, j)));
     MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
     return m;
 }

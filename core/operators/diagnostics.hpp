@@ -8,10 +8,11 @@
 
 namespace chute {
 
-// 0.5 * sum over cells of |u_c|^2 V (per unit depth and density), u_c the cell-centred velocity.
-double kinetic_energy(const Grid& grid, const Velocity& vel);
+// 0.5 * sum over cells of |u_c|^2 V (per unit depth and density), u_c the cell-centred velocity. `fluid`
+// (1 fluid, 0 solid; null: every cell) leaves the solid cells of a body-fitted hole out, here and below.
+double kinetic_energy(const Grid& grid, const Velocity& vel, const Field2D* fluid = nullptr);
 // max over cells of |div u| (1/s).
-double max_divergence(const Grid& grid, const Velocity& vel);
+double max_divergence(const Grid& grid, const Velocity& vel, const Field2D* fluid = nullptr);
 // Cell-centred velocity components (mean of the two faces).
 void cell_centred_velocity(const Grid& grid, const Velocity& vel, Field2D& uc, Field2D& vc);
 // Vorticity dv/dx - du/dy at cell centres (mean of the four corner values).

@@ -63,6 +63,20 @@ PoissonSolver::PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sid
         HYPRE_StructVectorAssemble(ones_);
     }
     buffer_.resize(static_cast<std::size_t>(grid_.nx()) * grid_.ny());
+    fluid_cells_ = static_cast<double>(grid_.global_cells());
+    update_matrix();
+}
+
+void PoissonSolver::set_fluid_cells(const Field2D* fluid, long long fluid_cells) {
+    fluid_ = fluid;
+    fluid_cells_ = static_cast<double>(fluid ? fluid_cells : grid_.global_cells());
+    if (singular_) {
+        const int nx = grid_.nx(), ny = grid_.ny();
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) buffer_[static_cast<std::size_t>(j) * nx + i] = fluid_ ? (*fluid_)(i, j) : 1.0;
+        HYPRE_StructVectorSetBoxValues(ones_, lower_.data(), upper_.data(), buffer_.data());
+        HYPRE_StructVectorAssemble(ones_);
+    }
     update_matrix();
 }
 
@@ -104,8 +118,21 @@ void PoissonSolver::update_matrix() {
             boundary(e, Side::right, grid_.touches(Side::right) && i == nx - 1, px);
             boundary(s, Side::bottom, grid_.touches(Side::bottom) && j == 0, py);
             boundary(n, Side::top, grid_.touches(Side::top) && j == ny - 1, py);
-            diag += w + e + s + n;
             double* v = &values[5 * (static_cast<std::size_t>(j) * nx + i)];
+            if (fluid_) {
+                const Field2D& f = *fluid_;
+                if (f(i, j) == 0.0) {  // a solid cell: phi = 0, uncoupled
+                    v[0] = 1.0;
+                    v[1] = v[2] = v[3] = v[4] = 0.0;
+                    continue;
+                }
+                // No flux across a solid cell's side.
+                w *= f(i - 1, j);
+                e *= f(i + 1, j);
+                s *= f(i, j - 1);
+                n *= f(i, j + 1);
+            }
+            diag += w + e + s + n;
             v[0] = diag;
             v[1] = -w;
             v[2] = -e;
@@ -137,7 +164,7 @@ void PoissonSolver::update_matrix() {
     HYPRE_StructPFMGSetNumPreRelax(pfmg_, 1);
     HYPRE_StructPFMGSetNumPostRelax(pfmg_, 1);
     if (singular_) {
-        null_spaces()[pfmg_] = NullSpace{ones_, static_cast<double>(grid_.global_cells())};
+        null_spaces()[pfmg_] = NullSpace{ones_, fluid_cells_};
         HYPRE_StructPCGSetPrecond(pcg_, pfmg_zero_mean, HYPRE_StructPFMGSetup, pfmg_);
     } else {
         HYPRE_StructPCGSetPrecond(pcg_, HYPRE_StructPFMGSolve, HYPRE_StructPFMGSetup, pfmg_);
@@ -153,22 +180,25 @@ PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double abso
     const int nx = grid_.nx(), ny = grid_.ny();
     MPI_Comm comm = grid_.comm();
 
+    auto fluid = [&](int i, int j) { return fluid_ ? (*fluid_)(i, j) : 1.0; };
     double sums[2] = {0.0, 0.0};  // right-hand side, initial guess
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-            const double b = -X.w(i) * Y.w(j) * source(i, j);
+            const double b = -X.w(i) * Y.w(j) * source(i, j) * fluid(i, j);
             buffer_[static_cast<std::size_t>(j) * nx + i] = b;
             sums[0] += b;
         }
     if (singular_) {
-        // Compatibility: the null space is the constants, so the right-hand side must sum to zero.
+        // Compatibility: the null space is the constants (on the fluid cells), so the right-hand side must sum
+        // to zero.
         MPI_Allreduce(MPI_IN_PLACE, sums, 1, MPI_DOUBLE, MPI_SUM, comm);
-        const double mean = sums[0] / static_cast<double>(grid_.global_cells());
-        for (double& b : buffer_) b -= mean;
+        const double mean = sums[0] / fluid_cells_;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) buffer_[static_cast<std::size_t>(j) * nx + i] -= mean * fluid(i, j);
     }
     HYPRE_StructVectorSetBoxValues(b_, lower_.data(), upper_.data(), buffer_.data());
     for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) buffer_[static_cast<std::size_t>(j) * nx + i] = p(i, j);
+        for (int i = 0; i < nx; ++i) buffer_[static_cast<std::size_t>(j) * nx + i] = p(i, j) * fluid(i, j);
     HYPRE_StructVectorSetBoxValues(x_, lower_.data(), upper_.data(), buffer_.data());
     HYPRE_StructVectorAssemble(b_);
     HYPRE_StructVectorAssemble(x_);
@@ -184,12 +214,13 @@ PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double abso
     double mean = 0.0;
     if (singular_) {
         double local = 0.0;
-        for (double v : buffer_) local += v;
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) local += buffer_[static_cast<std::size_t>(j) * nx + i] * fluid(i, j);
         MPI_Allreduce(&local, &mean, 1, MPI_DOUBLE, MPI_SUM, comm);
-        mean /= static_cast<double>(grid_.global_cells());
+        mean /= fluid_cells_;
     }
     for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) p(i, j) = buffer_[static_cast<std::size_t>(j) * nx + i] - mean;
+        for (int i = 0; i < nx; ++i) p(i, j) = (buffer_[static_cast<std::size_t>(j) * nx + i] - mean) * fluid(i, j);
     return stats;
 }
 

@@ -10,6 +10,9 @@
 // made zero-mean, the preconditioner's output is projected onto zero-mean vectors (without this PCG
 // breaks down on stretched grids: PFMG does not keep the null space out), and the solution's mean is
 // removed. The matrix is kept as it is (STACK.md: pinning a cell slows PFMG five-fold).
+// Solid cells (core/grid/solid_cells.hpp, a body-fitted hole) are left out: their rows are the identity with
+// a zero right-hand side, and no flux crosses their sides (Neumann); the null space and the means are then
+// those of the fluid cells.
 #include <HYPRE_struct_ls.h>
 
 #include <array>
@@ -33,6 +36,9 @@ public:
 
     // Rebuild the matrix and the multigrid hierarchy (after grid lines moved).
     void update_matrix();
+    // Leave the cells where `fluid` is 0 out of the problem (null: none); `fluid_cells` counts the others over
+    // all ranks. Rebuilds the matrix; the field must outlive the solver or the next call.
+    void set_fluid_cells(const Field2D* fluid, long long fluid_cells);
     // Solve laplacian(p) = source; p holds the initial guess on entry (warm start) and the solution on exit.
     // absolute_tolerance bounds the residual norm from below (for source ~ 0).
     PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
@@ -53,6 +59,8 @@ private:
     HYPRE_StructSolver pcg_ = nullptr, pfmg_ = nullptr;
     HYPRE_StructVector ones_ = nullptr;  // the null space of the all-Neumann matrix
     std::vector<double> buffer_;
+    const Field2D* fluid_ = nullptr;  // 1 in fluid cells, 0 in solid ones (null: all fluid)
+    double fluid_cells_ = 0.0;        // global count of fluid cells
     std::array<int, 2> lower_{}, upper_{};
 };
 

@@ -1,0 +1,54 @@
+#pragma once
+// Solid cells: axis-aligned blocks of cells taken out of the fluid, whose sides lie on grid lines: the hole of
+// a body-fitted body (docs/design.md, carrier 2). A block moves rigidly (translation, as in the study) with
+// its velocity U. The flow solver leaves its cells out of the pressure problem (no flux across its sides, so
+// the projection keeps the sides' normal velocity: a Neumann condition) and fills its faces before every
+// operator reads them, as BoundaryConditions fills the ghosts of the domain's walls:
+//
+//   a face on a side, normal to it            u_n = U_n (the wall moves with the block)
+//   the two layers of tangential faces        u_t = U_t - (u_t,fluid - U_t) d_in / d_out, the fluid face
+//   inside a side                             mirrored across the side line: the diffusion stencil of the
+//                                             first fluid face sees u_t = U_t on the side (no slip), the
+//                                             limiters a field without a jump
+//   every other face inside                   U
+//
+// Corners take the value of the side whose normal face they are. Blocks must not touch each other or the
+// domain's boundary (the carrier checks; a mirror that falls outside this patch's halo takes U).
+#include <array>
+#include <vector>
+
+#include "field.hpp"
+
+namespace chute {
+
+struct SolidBlock {
+    std::array<int, 2> lower{}, upper{};  // global cell indices: the block is cells [lower, upper) in x and y
+    std::array<double, 2> velocity{};     // of the block (m/s)
+};
+
+class SolidCells {
+public:
+    explicit SolidCells(const Grid& grid);
+
+    void set(std::vector<SolidBlock> blocks);
+    const std::vector<SolidBlock>& blocks() const { return blocks_; }
+    bool empty() const { return blocks_.empty(); }
+
+    // 1 in fluid cells, 0 in solid ones (local indices, ghosts included).
+    const Field2D& fluid() const { return fluid_; }
+    bool solid(int i, int j) const { return fluid_(i, j) == 0.0; }
+    long long fluid_cell_count() const { return fluid_count_; }  // over all ranks
+
+    // The faces of every block on this patch, ghosts included (call after the halo exchange).
+    void fill(Velocity& vel) const;
+
+private:
+    void fill_block(const SolidBlock& b, Velocity& vel) const;
+
+    const Grid& grid_;
+    std::vector<SolidBlock> blocks_;
+    Field2D fluid_;
+    long long fluid_count_ = 0;
+};
+
+}  // namespace chute
