@@ -10,6 +10,8 @@ namespace chute {
 
 enum class BodyShape { circle, rectangle, polygon, plane, segment };
 enum class MotionType { fixed, constant_velocity, oscillation, uniform_acceleration, free };
+// How a body is carried through the flow (body/carrier.hpp): carrier 1 or carrier 2 of docs/design.md.
+enum class CarrierKind { immersed, body_fitted };
 
 // Prescribed motion of a body's reference point (its centre of area) and angle, from its initial place:
 //   fixed; constant_velocity: x0 + V t; oscillation: x0 + A sin(2 pi f t + phase);
@@ -36,6 +38,7 @@ struct BodyConfig {
     MotionConfig motion;
     double density = 0.0;                                     // kg/m^3, free bodies
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
+    CarrierKind carrier = CarrierKind::immersed;
 };
 
 // Where a body is at the start, for the check that it lies in the domain (run/case_file.cpp): the key that

@@ -85,6 +85,14 @@ std::vector<CaseKey> body_keys() {
          .when_values = {"segment"},
          .units = "m",
          .meaning = "Second end of the segment; the solid lies on the right going from `from` to `to`."},
+        {.path = "bodies.<body>.carrier",
+         .type = K::choice,
+         .default_value = "immersed",
+         .choices = {"immersed", "body_fitted"},
+         .meaning = "How the flow carries the body (docs/design.md): `immersed`, markers and forcing on the fixed "
+                    "grid; `body_fitted`, a hole in the grid whose sides are grid lines (an unrotated rectangle "
+                    "whose sides lie on grid lines, at least two cells from the domain's sides; fixed bodies and "
+                    "laminar flow in this version). Every body of a run is carried the same way."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "
@@ -244,6 +252,8 @@ std::vector<BodyConfig> read_bodies(const CaseReader& r, double plane_reference_
                                                      {"polygon", BodyShape::polygon},
                                                      {"plane", BodyShape::plane},
                                                      {"segment", BodyShape::segment}});
+        b.carrier = r.choice<CarrierKind>(
+            p + ".carrier", {{"immersed", CarrierKind::immersed}, {"body_fitted", CarrierKind::body_fitted}});
         const bool closed =
             b.shape == BodyShape::circle || b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon;
         // The height: the extent across x, the default reference length.

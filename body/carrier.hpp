@@ -14,7 +14,8 @@
 //   measure(u^{n+1}, p, turbulence)       the force record of every body, both measures (body_forces.hpp)
 //
 // and the turbulence model asks it where the walls are: fluid_cells(), and sample_walls(u, k) at the cells
-// beside the bodies' surfaces, after locate_walls() (the log law itself is the model's, turbulence/).
+// beside the bodies' surfaces, after locate_walls() (the log law itself is the model's, turbulence/). A carrier
+// that cuts its bodies out of the grid hands the flow solver the cells it took: solid_cells().
 // Free-body dynamics, turbulence, outputs and summaries hold a Carrier&, never a concrete carrier.
 #include <functional>
 #include <string>
@@ -23,7 +24,9 @@
 #include "body.hpp"
 #include "body_forces.hpp"
 #include "field.hpp"
+#include "flow_solver.hpp"
 #include "rigid_body.hpp"
+#include "solid_cells.hpp"
 
 namespace chute {
 
@@ -65,6 +68,13 @@ public:
     virtual void locate_walls() = 0;
     virtual const Field2D& fluid_cells() const = 0;  // 1 in fluid cells, 0 inside a body; ghosts included
     virtual std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const = 0;
+
+    // The cells the bodies take out of the fluid (a body-fitted hole, core/grid/solid_cells.hpp); null when the
+    // bodies are forced on the whole grid (the immersed boundary). The flow solver is handed it once.
+    virtual const SolidCells* solid_cells() const { return nullptr; }
+    // The flow the bodies are carried through, handed once after both are built (after the solver took the
+    // solid cells): a carrier that reads the solver's fluxes keeps it.
+    virtual void attach(const FlowSolver&) {}
 };
 
 }  // namespace chute

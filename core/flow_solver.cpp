@@ -63,13 +63,39 @@ void FlowSolver::set_initial_condition() {
 
 void FlowSolver::fill_boundaries(Velocity& vel) const {
     bc_->apply(vel);
-    if (solid_) solid_->fill(vel);
+    if (!solid_ || solid_->empty()) return;
+    // A hole's face in a halo may mirror a fluid face beyond it: its owner fills it, the exchange brings it.
+    solid_->fill(vel);
+    halo_->exchange(vel);
+    bc_->apply(vel);
 }
 
 void FlowSolver::set_solid_cells(const SolidCells* solid) {
     solid_ = solid;
     poisson_->set_fluid_cells(fluid_cells(), solid_ ? solid_->fluid_cell_count() : grid_->global_cells());
     refresh_ghosts();
+}
+
+std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const {
+    // After the step, rhs_old_ holds H^n and rhs_ H^{n-1} (project() swapped them).
+    const auto& X = grid_->lx();
+    const auto& Y = grid_->ly();
+    const int ox = X.offset, oy = Y.offset;
+    double m[2] = {0.0, 0.0};
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i) {
+            const int gi = i + ox, gj = j + oy;
+            if (gi >= b.lower[0] && gi <= b.upper[0] && gj >= b.lower[1] && gj < b.upper[1]) {
+                const double H = weight_new_ * rhs_old_.u(i, j) + weight_old_ * rhs_.u(i, j);
+                m[0] += X.dc(i) * Y.w(j) * (H - (p_(i, j) - p_(i - 1, j)) / X.dc(i));
+            }
+            if (gi >= b.lower[0] && gi < b.upper[0] && gj >= b.lower[1] && gj <= b.upper[1]) {
+                const double H = weight_new_ * rhs_old_.v(i, j) + weight_old_ * rhs_.v(i, j);
+                m[1] += X.w(i) * Y.dc(j) * (H - (p_(i, j) - p_(i, j - 1)) / Y.dc(j));
+            }
+        }
+    MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_SUM, grid_->comm());
+    return {m[0], m[1]};
 }
 
 void FlowSolver::refresh_ghosts() {
@@ -137,6 +163,8 @@ void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
 
 void FlowSolver::predict_velocity(double dt, double r) {
     const double c_new = dt * (1.0 + 0.5 * r), c_old = -dt * 0.5 * r;
+    weight_new_ = 1.0 + 0.5 * r;
+    weight_old_ = -0.5 * r;
     const double fx = dt * config_.body_force[0], fy = dt * config_.body_force[1];
     const int nx = grid_->nx(), ny = grid_->ny();
     for (int j = 0; j < ny; ++j)

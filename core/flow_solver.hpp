@@ -18,6 +18,7 @@
 // With explicit diffusion this is the same discrete system as solving for p directly (phi = p^{n+1/2} -
 // p^{n-1/2}); the pressure is second order at t^{n+1/2} (tests/unit/test_taylor_green.cpp).
 // The first step (and the first after a change of scheme) is forward Euler.
+#include <array>
 #include <memory>
 
 #include "boundary_conditions.hpp"
@@ -100,6 +101,12 @@ public:
     void set_solid_cells(const SolidCells* solid);
     const SolidCells* solid_cells() const { return solid_; }
     const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : nullptr; }
+    // The momentum the last step's fluxes carried into a solid block, per unit time, density and depth (m^3/s^2:
+    // the force on it / (rho depth)): the sum over the block's faces of V (H_step - grad p^{n+1/2}), H_step the
+    // step's Adams-Bashforth combination of convection and diffusion. The operators are conservative, so the
+    // fluxes inside the block cancel and what is left is what crossed its sides: the fluid's momentum balance
+    // closes exactly. Explicit diffusion only (a body-fitted run refuses the implicit one). Collective.
+    std::array<double, 2> solid_momentum_rate(const SolidBlock& block) const;
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
@@ -136,6 +143,7 @@ private:
     long step_ = 0;
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
+    double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
 };
 
 Axis build_axis(const AxisConfig& c, bool periodic);

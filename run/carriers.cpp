@@ -3,6 +3,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "body_fitted.hpp"
 #include "case_settings.hpp"
 #include "immersed_boundary.hpp"
 
@@ -12,8 +13,12 @@ namespace {
 
 std::map<std::string, CarrierFactory>& registry() {
     static std::map<std::string, CarrierFactory> r = {
-        {"immersed", [](const Grid& grid, const CaseConfig& config, std::vector<Body>& bodies) {
+        {"immersed",
+         [](const Grid& grid, const CaseConfig& config, std::vector<Body>& bodies) {
              return std::make_unique<ImmersedBoundary>(grid, immersed_boundary_settings(config), bodies);
+         }},
+        {"body_fitted", [](const Grid& grid, const CaseConfig& config, std::vector<Body>& bodies) {
+             return std::make_unique<BodyFitted>(grid, body_fitted_settings(config), bodies);
          }}};
     return r;
 }

@@ -6,6 +6,10 @@ ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
     return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
 }
 
+BodyFittedSettings body_fitted_settings(const CaseConfig& c) {
+    return {c.density, c.viscosity, c.depth, c.turbulence.model != TurbulenceModelType::laminar};
+}
+
 FreeBodySettings free_body_settings(const CaseConfig& c) {
     return {c.contact,  Vec2(c.gravity[0], c.gravity[1]),    c.density, c.depth, c.ibm.virtual_mass,
             c.coupling, obstacles_of(c, c.bodies, c.contact)};

@@ -24,14 +24,29 @@ std::vector<Body> bodies_of(const CaseConfig& config) {
     return bodies;
 }
 
+// The carrier the case's bodies ask for (bodies.<body>.carrier); one run carries all its bodies one way.
+std::string carrier_of(const CaseConfig& config) {
+    auto name = [](CarrierKind k) { return k == CarrierKind::body_fitted ? "body_fitted" : "immersed"; };
+    if (config.bodies.empty()) return "immersed";
+    const BodyConfig& first = config.bodies.front();
+    for (const BodyConfig& b : config.bodies)
+        if (b.carrier != first.carrier)
+            throw std::invalid_argument("bodies." + b.name + ".carrier: `" + name(b.carrier) + "`, but bodies." +
+                                        first.name + ".carrier is `" + name(first.carrier) +
+                                        "`: one run carries all its bodies the same way");
+    return name(first.carrier);
+}
+
 }  // namespace
 
 Model::Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier)
     : config_(config),
       flow_(std::make_unique<FlowSolver>(config_, comm)),
       bodies_(bodies_of(config_)),
-      carrier_(make_carrier(carrier, flow_->grid(), config_, bodies_)),
+      carrier_(make_carrier(carrier.empty() ? carrier_of(config_) : carrier, flow_->grid(), config_, bodies_)),
       free_(std::make_unique<FreeBodies>(free_body_settings(config_), bodies_, *carrier_)) {
+    if (const SolidCells* solid = carrier_->solid_cells()) flow_->set_solid_cells(solid);
+    carrier_->attach(*flow_);
     if (config_.turbulence.model == TurbulenceModelType::k_epsilon)
         turbulence_ = std::make_unique<KEpsilon>(k_epsilon_settings(config_), *flow_, *carrier_);
 }

@@ -19,8 +19,8 @@ namespace chute {
 class Model {
 public:
     // std::invalid_argument for a case the grid, the bodies or the turbulence model cannot take (naming the
-    // key); `carrier` a name registered in carriers.hpp.
-    Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier = "immersed");
+    // key); `carrier` a name registered in carriers.hpp (empty: the one the bodies ask for, bodies.<body>.carrier).
+    Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier = {});
     Model(const Model&) = delete;
     Model& operator=(const Model&) = delete;
 

@@ -24,7 +24,7 @@ struct RunOptions {
     std::optional<std::filesystem::path> restart;  // checkpoint to continue from
     std::string case_yaml;                         // the case as run, saved as out_dir/case.yaml
     bool quiet = false;                            // no progress lines (tests)
-    std::string carrier = "immersed";              // how bodies are carried: a name registered in carriers.hpp
+    std::string carrier;  // how bodies are carried, a name registered in carriers.hpp; empty: as the case says
 };
 
 struct RunSummary {

@@ -5,9 +5,7 @@
 
 namespace chute {
 
-SolidCells::SolidCells(const Grid& grid) : grid_(grid), fluid_(grid, 1.0) {
-    fluid_count_ = grid.global_cells();
-}
+SolidCells::SolidCells(const Grid& grid) : grid_(grid), fluid_(grid, 1.0) { fluid_count_ = grid.global_cells(); }
 
 void SolidCells::set(std::vector<SolidBlock> blocks) {
     blocks_ = std::move(blocks);
@@ -43,14 +41,16 @@ void SolidCells::fill_block(const SolidBlock& b, Velocity& vel) const {
     // faces lie on them), `tangential_*` the lines of the sides it is tangential to (its faces lie on the
     // centres between them). k_n counts the component's lines from the block's low normal side, k_t the centres
     // from the low tangential side.
-    auto fill_component = [&](Field2D& c, double U, bool normal_is_x, bool has_normal_sides, bool has_tangential_sides) {
+    auto fill_component = [&](Field2D& c, double U, bool normal_is_x, bool has_normal_sides,
+                              bool has_tangential_sides) {
         const Axis& T = normal_is_x ? Y : X;
         const int n_lo = b.lower[normal_is_x ? 0 : 1], n_hi = b.upper[normal_is_x ? 0 : 1];
         const int t_lo = b.lower[normal_is_x ? 1 : 0], t_hi = b.upper[normal_is_x ? 1 : 0];
         for (int j = j_lo; j < j_hi; ++j)
             for (int i = i_lo; i < i_hi; ++i) {
                 const int gn = (normal_is_x ? i + ox : j + oy), gt = (normal_is_x ? j + oy : i + ox);
-                if ((has_normal_sides && (gn < n_lo || gn > n_hi)) || (has_tangential_sides && (gt < t_lo || gt >= t_hi)))
+                if ((has_normal_sides && (gn < n_lo || gn > n_hi)) ||
+                    (has_tangential_sides && (gt < t_lo || gt >= t_hi)))
                     continue;
                 // Depth in cells from the nearest side of each kind: on a normal side 0; the first tangential
                 // face inside is half a cell in.

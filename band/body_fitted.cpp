@@ -1,0 +1,73 @@
+#include "body_fitted.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "hole.hpp"
+#include "hole_stress.hpp"
+
+namespace chute {
+
+BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std::vector<Body>& bodies)
+    : grid_(grid), settings_(settings), bodies_(bodies), solid_(grid) {
+    if (settings_.turbulent)
+        throw std::invalid_argument(
+            "turbulence.model: body_fitted bodies are carried in laminar flow in this version (the wall functions on "
+            "the hole's sides come with the moving grid)");
+    std::vector<SolidBlock> blocks;
+    for (const Body& body : bodies_) {
+        if (body.moves())
+            throw std::invalid_argument("bodies." + body.name() +
+                                        ".motion.type: body_fitted bodies are fixed in this version (a moving body "
+                                        "needs the grid to move with it)");
+        blocks.push_back(hole_of(body, grid_));
+        const SolidBlock& b = blocks.back();
+        double h = 1e300;
+        for (int k = b.lower[0]; k < b.upper[0]; ++k) h = std::min(h, grid_.x_axis().width(k));
+        for (int k = b.lower[1]; k < b.upper[1]; ++k) h = std::min(h, grid_.y_axis().width(k));
+        cell_size_.push_back(h);
+    }
+    for (std::size_t a = 0; a < blocks.size(); ++a)
+        for (std::size_t c = a + 1; c < blocks.size(); ++c) {
+            const SolidBlock &p = blocks[a], &q = blocks[c];
+            const bool apart = p.upper[0] + 2 <= q.lower[0] || q.upper[0] + 2 <= p.lower[0] ||
+                               p.upper[1] + 2 <= q.lower[1] || q.upper[1] + 2 <= p.lower[1];
+            if (!apart)
+                throw std::invalid_argument("bodies." + bodies_[c].name() + ": body_fitted bodies must stay at least two cells from bodies." +
+                                            bodies_[a].name());
+        }
+    solid_.set(std::move(blocks));
+}
+
+void BodyFitted::place(double t) {
+    for (Body& b : bodies_) b.move_to(t);
+}
+
+SurfaceForces BodyFitted::stress(std::size_t b, const Velocity& vel, const Field2D& p) const {
+    return hole_stress(grid_, solid_.blocks()[b], bodies_[b].state(), vel, p, settings_.density, settings_.viscosity,
+                       settings_.depth);
+}
+
+Wrench BodyFitted::hydrodynamic_wrench(std::size_t b, const Velocity&, double) {
+    // Only free bodies are moved by a wrench, and the constructor refuses them.
+    throw std::logic_error("BodyFitted::hydrodynamic_wrench: body " + bodies_[b].name() +
+                           " is not free (free body_fitted bodies come with the moving grid)");
+}
+
+std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& p, const WallTurbulence*) {
+    std::vector<BodyForces> out(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        out[b].surface = stress(b, vel, p);
+        const std::array<double, 2> m = flow_->solid_momentum_rate(solid_.blocks()[b]);
+        out[b].forcing = settings_.density * settings_.depth * Vec2(m[0], m[1]);
+        out[b].forcing_torque = out[b].surface.total_torque();
+    }
+    return out;
+}
+
+std::vector<WallSample> BodyFitted::sample_walls(const Velocity&, const Field2D&) const {
+    // Turbulence is refused in the constructor.
+    throw std::logic_error("BodyFitted::sample_walls: no turbulence model with body_fitted bodies in this version");
+}
+
+}  // namespace chute
