@@ -15,11 +15,22 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
             "turbulence.model: body_fitted bodies are carried in laminar flow in this version (the wall functions on "
             "the hole's sides come with the moving grid)");
     std::vector<SolidBlock> blocks;
-    for (const Body& body : bodies_) {
-        if (body.moves())
-            throw std::invalid_argument("bodies." + body.name() +
-                                        ".motion.type: body_fitted bodies are fixed in this version (a moving body "
-                                        "needs the grid to move with it)");
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const Body& body = bodies_[k];
+        const MotionConfig& m = body.config().motion;
+        const std::string key = "bodies." + body.name() + ".motion";
+        if (body.free())
+            throw std::invalid_argument(key +
+                                        ".type: a free body_fitted body is not carried yet (prescribed motion "
+                                        "only in this version)");
+        if (m.angular_velocity != 0.0 || m.angular_amplitude != 0.0 || m.angular_acceleration != 0.0)
+            throw std::invalid_argument(key + ": a body_fitted body translates only (its sides stay on grid lines)");
+        if (body.moves()) {
+            if (carrying_ >= 0)
+                throw std::invalid_argument(key + ".type: one body_fitted body moves, and the grid with it; bodies." +
+                                            bodies_[carrying_].name() + " already does");
+            carrying_ = static_cast<int>(k);
+        }
         blocks.push_back(hole_of(body, grid_));
         const SolidBlock& b = blocks.back();
         double h = 1e300;
@@ -33,14 +44,35 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
             const bool apart = p.upper[0] + 2 <= q.lower[0] || q.upper[0] + 2 <= p.lower[0] ||
                                p.upper[1] + 2 <= q.lower[1] || q.upper[1] + 2 <= p.lower[1];
             if (!apart)
-                throw std::invalid_argument("bodies." + bodies_[c].name() + ": body_fitted bodies must stay at least two cells from bodies." +
+                throw std::invalid_argument("bodies." + bodies_[c].name() +
+                                            ": body_fitted bodies must stay at least two cells from bodies." +
                                             bodies_[a].name());
         }
     solid_.set(std::move(blocks));
 }
 
+void BodyFitted::attach(FlowSolver& flow) {
+    flow_ = &flow;
+    follow();
+}
+
+void BodyFitted::follow() {
+    if (carrying_ < 0) return;
+    const Vec2 v = bodies_[carrying_].state().velocity;
+    flow_->set_frame_velocity({v.x(), v.y()});
+    solid_.set_velocity(static_cast<std::size_t>(carrying_), {v.x(), v.y()});
+}
+
 void BodyFitted::place(double t) {
-    for (Body& b : bodies_) b.move_to(t);
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        Body& body = bodies_[k];
+        const Vec2 before = body.state().centre;
+        body.move_to(t);
+        if (static_cast<int>(k) != carrying_) continue;
+        const Vec2 shift = body.state().centre - before;
+        flow_->translate_grid(shift.x(), shift.y());
+    }
+    follow();
 }
 
 SurfaceForces BodyFitted::stress(std::size_t b, const Velocity& vel, const Field2D& p) const {

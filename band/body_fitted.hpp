@@ -9,8 +9,11 @@
 // They differ by the staggered grid's half cell beside each side: the normal-momentum cells end half a cell
 // from the side, where (a) takes the convective and normal viscous fluxes and (b) the wall's zero.
 //
-// This version carries fixed bodies in laminar flow. Moving bodies need the grid to move with them (ALE) and
-// turbulence the wall functions on the sides; both are refused with an error naming the key.
+// A body with prescribed translation carries the whole grid with it (ALE: the grid translates rigidly at the
+// body's velocity, the convective fluxes are relative to it, and the domain's boundaries keep the conditions of
+// the inertial frame: water at rest ahead of the block, an outflow behind), as the study's body-fitted
+// OpenFOAM runs of a fall do. This version takes one moving body, prescribed (not free), without rotation, in
+// laminar flow; the rest is refused with an error naming the key.
 #include <vector>
 
 #include "carrier.hpp"
@@ -20,7 +23,7 @@ namespace chute {
 
 struct BodyFittedSettings {
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
-    bool turbulent = false;                                   // turbulence.model is not laminar
+    bool turbulent = false;                                  // turbulence.model is not laminar
 };
 
 class BodyFitted final : public Carrier {
@@ -43,7 +46,7 @@ public:
     std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const override;
 
     const SolidCells* solid_cells() const override { return &solid_; }
-    void attach(const FlowSolver& flow) override { flow_ = &flow; }
+    void attach(FlowSolver& flow) override;
 
 private:
     SurfaceForces stress(std::size_t b, const Velocity& vel, const Field2D& p) const;
@@ -53,7 +56,10 @@ private:
     std::vector<Body>& bodies_;
     SolidCells solid_;
     std::vector<double> cell_size_;
-    const FlowSolver* flow_ = nullptr;
+    FlowSolver* flow_ = nullptr;
+    int carrying_ = -1;  // the body the grid moves with (-1: none)
+    // The grid follows body `carrying_`: its velocity is the frame's and its block's.
+    void follow();
 };
 
 }  // namespace chute

@@ -13,7 +13,8 @@ namespace {
 int line_at(const Axis& axis, double x, const std::string& body, const char* side, const char* key) {
     const auto& L = axis.lines();
     const auto it = std::lower_bound(L.begin(), L.end(), x);
-    const int above = static_cast<int>(std::min<std::ptrdiff_t>(it - L.begin(), static_cast<std::ptrdiff_t>(L.size()) - 1));
+    const int above =
+        static_cast<int>(std::min<std::ptrdiff_t>(it - L.begin(), static_cast<std::ptrdiff_t>(L.size()) - 1));
     const int below = std::max(above - 1, 0);
     const int k = std::abs(L[above] - x) < std::abs(L[below] - x) ? above : below;
     const double cell = std::min(axis.width(std::min(k, axis.cells() - 1)), axis.width(std::max(k - 1, 0)));
@@ -31,16 +32,20 @@ SolidBlock hole_of(const Body& body, const Grid& grid) {
     const std::string& name = body.name();
     if (c.shape != BodyShape::rectangle)
         throw std::invalid_argument("bodies." + name + ".carrier: `body_fitted` carries rectangles only (shape `" +
-                                    (c.shape == BodyShape::circle ? std::string("circle") : std::string("other")) + "`)");
+                                    (c.shape == BodyShape::circle ? std::string("circle") : std::string("other")) +
+                                    "`)");
     if (c.angle != 0.0 || body.state().angle != 0.0)
-        throw std::invalid_argument("bodies." + name + ".angle: a body_fitted rectangle is not rotated (its sides lie on grid lines)");
+        throw std::invalid_argument("bodies." + name +
+                                    ".angle: a body_fitted rectangle is not rotated (its sides lie on grid lines)");
     const Vec2 centre = body.state().centre;
     const double hw = 0.5 * c.size[0], hh = 0.5 * c.size[1];
     const Axis& X = grid.x_axis();
     const Axis& Y = grid.y_axis();
     SolidBlock b;
-    b.lower = {line_at(X, centre.x() - hw, name, "left", "domain.x"), line_at(Y, centre.y() - hh, name, "bottom", "domain.y")};
-    b.upper = {line_at(X, centre.x() + hw, name, "right", "domain.x"), line_at(Y, centre.y() + hh, name, "top", "domain.y")};
+    b.lower = {line_at(X, centre.x() - hw, name, "left", "domain.x"),
+               line_at(Y, centre.y() - hh, name, "bottom", "domain.y")};
+    b.upper = {line_at(X, centre.x() + hw, name, "right", "domain.x"),
+               line_at(Y, centre.y() + hh, name, "top", "domain.y")};
     if (b.lower[0] < 2 || b.lower[1] < 2 || b.upper[0] > X.cells() - 2 || b.upper[1] > Y.cells() - 2)
         throw std::invalid_argument("bodies." + name +
                                     ": a body_fitted body must stay at least two cells from the domain's sides");

@@ -73,8 +73,8 @@ public:
     // bodies are forced on the whole grid (the immersed boundary). The flow solver is handed it once.
     virtual const SolidCells* solid_cells() const { return nullptr; }
     // The flow the bodies are carried through, handed once after both are built (after the solver took the
-    // solid cells): a carrier that reads the solver's fluxes keeps it.
-    virtual void attach(const FlowSolver&) {}
+    // solid cells): a carrier that reads the solver's fluxes, or moves its grid with a body, keeps it.
+    virtual void attach(FlowSolver&) {}
 };
 
 }  // namespace chute

@@ -74,6 +74,24 @@ void FlowSolver::set_solid_cells(const SolidCells* solid) {
     solid_ = solid;
     poisson_->set_fluid_cells(fluid_cells(), solid_ ? solid_->fluid_cell_count() : grid_->global_cells());
     refresh_ghosts();
+    if (step_ == 0 && fluid_cells()) project_start();
+}
+
+// u0 -= grad phi with laplacian(phi) = div(u0): the start made divergence-free against the hole's sides (the
+// flow an impulsive start sets up at once). Without it the first step's convective flux carries the start's
+// divergence, and a run is no longer Galilean invariant (the flux of a constant shift w is w div u).
+void FlowSolver::project_start() {
+    halo_->exchange(vel_);
+    fill_boundaries(vel_);
+    divergence(*grid_, vel_, 1.0, source_);
+    phi_.fill(0.0);
+    poisson_->solve(source_, phi_, poisson_residual_floor(1.0));
+    halo_->exchange(phi_);
+    bc_->apply_pressure(phi_);
+    subtract_pressure_gradient(*grid_, *bc_, phi_, 1.0, vel_);
+    phi_.fill(0.0);
+    halo_->exchange(vel_);
+    fill_boundaries(vel_);
 }
 
 std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const {
@@ -114,6 +132,18 @@ void FlowSolver::restore(long step, double time, double dt_previous, bool implic
     refresh_ghosts();
 }
 
+void FlowSolver::translate_grid(double dx, double dy) {
+    std::vector<double> x = grid_->x_axis().lines(), y = grid_->y_axis().lines();
+    for (double& l : x) l += dx;
+    for (double& l : y) l += dy;
+    grid_->set_lines(std::move(x), std::move(y));
+}
+
+void FlowSolver::set_frame_velocity(std::array<double, 2> w) {
+    frame_ = w;
+    bc_->set_frame_velocity(w);
+}
+
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
     grid_->set_lines(std::move(x_lines), std::move(y_lines));
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
@@ -126,7 +156,7 @@ double FlowSolver::next_dt() const {
     const bool cfl_only = config_.diffusion == DiffusionScheme::implicit_euler ||
                           (config_.diffusion == DiffusionScheme::automatic && eddy_on_);
     const double nu = cfl_only ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
-    const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number);
+    const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number, frame_);
     return std::min(limits.stable(), config_.max_dt);
 }
 
@@ -152,7 +182,7 @@ bool FlowSolver::implicit_step(double dt) const {
 }
 
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
-    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs);
+    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, frame_);
     if (implicit_now_)
         add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else if (eddy_on_)

@@ -99,6 +99,9 @@ public:
     // fills the boundaries' ghosts and leaves them out of the pressure problem; call again after the blocks
     // changed cells (core/grid/solid_cells.hpp). The object must outlive the solver or the next call.
     void set_solid_cells(const SolidCells* solid);
+    // Project the velocity as it stands (u -= grad phi, laplacian phi = div u; pressure unchanged): what
+    // set_solid_cells() does to the start, so that an impulsive start is divergence-free before the first step.
+    void project_start();
     const SolidCells* solid_cells() const { return solid_; }
     const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : nullptr; }
     // The momentum the last step's fluxes carried into a solid block, per unit time, density and depth (m^3/s^2:
@@ -107,6 +110,12 @@ public:
     // fluxes inside the block cancel and what is left is what crossed its sides: the fluid's momentum balance
     // closes exactly. Explicit diffusion only (a body-fitted run refuses the implicit one). Collective.
     std::array<double, 2> solid_momentum_rate(const SolidBlock& block) const;
+    // A grid that translates rigidly (a body-fitted block carrying it): shift every line by (dx, dy) and take w
+    // as the grid's velocity, which the convective fluxes and the step's limit see relative to it
+    // (core/operators/convection.hpp). Spacings do not change, so neither does the Poisson matrix.
+    void translate_grid(double dx, double dy);
+    void set_frame_velocity(std::array<double, 2> w);
+    std::array<double, 2> frame_velocity() const { return frame_; }
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
@@ -144,6 +153,7 @@ private:
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
+    std::array<double, 2> frame_{};               // the grid's velocity (translate_grid)
 };
 
 Axis build_axis(const AxisConfig& c, bool periodic);

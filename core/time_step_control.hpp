@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // Adaptive time step for the explicit (Adams-Bashforth 2) momentum update:
 //   convection:  dt <= cfl / max(|u|/dx + |v|/dy)
 //   diffusion:   dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable for real eigenvalues down to
@@ -17,6 +18,8 @@ struct TimeStepLimits {
 double max_inverse_square_spacing(const Grid& grid);
 
 // Global (all ranks) limits for the current velocity.
-TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number);
+// `frame`: the grid's velocity (a translating body-fitted grid); the convective limit takes |u - w|.
+TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number,
+                                std::array<double, 2> frame = {0.0, 0.0});
 
 }  // namespace chute

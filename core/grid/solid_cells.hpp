@@ -32,6 +32,8 @@ public:
 
     void set(std::vector<SolidBlock> blocks);
     const std::vector<SolidBlock>& blocks() const { return blocks_; }
+    // The velocity of block b (its cells stay the same: the grid moves with it).
+    void set_velocity(std::size_t b, std::array<double, 2> velocity) { blocks_.at(b).velocity = velocity; }
     bool empty() const { return blocks_.empty(); }
 
     // 1 in fluid cells, 0 in solid ones (local indices, ghosts included).

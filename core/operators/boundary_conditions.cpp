@@ -150,7 +150,7 @@ void BoundaryConditions::set_outflow(const Velocity& old, Velocity& next, double
         const int k = static_cast<int>(s);
         if (c.outflow == OutflowKind::convective) convective_length += sums[2 * k + 1];
         if (!grid_.touches(s)) continue;
-        const double Uc = std::max(0.0, sums[2 * k] / sums[2 * k + 1]);
+        const double Uc = std::max(0.0, sums[2 * k] / sums[2 * k + 1] - outward_sign(s) * frame_[is_x_side(s) ? 0 : 1]);
         const bool convective = c.outflow == OutflowKind::convective;
         switch (s) {
             case Side::right:

@@ -29,6 +29,9 @@ public:
     // Zero-stress outflow: copy the adjacent interior face (du_n/dn = 0) into the boundary face.
     // Then, if the pressure problem is pure Neumann, shift the convective outflow so mass is conserved.
     void set_outflow(const Velocity& old, Velocity& next, double dt) const;
+    // The grid's velocity (a translating body-fitted grid): a convective outflow is carried at the mean outward
+    // speed relative to the grid.
+    void set_frame_velocity(std::array<double, 2> w) { frame_ = w; }
     // Pressure ghosts: Neumann (copy) or Dirichlet p = 0 (odd mirror) at zero-stress outflows.
     void apply_pressure(Field2D& p) const;
 
@@ -53,6 +56,7 @@ private:
     std::array<BoundaryConfig, 4> config_;
     std::array<bool, 4> dirichlet_{};
     int u_first_ = 0, v_first_ = 0;
+    std::array<double, 2> frame_{};
 };
 
 }  // namespace chute

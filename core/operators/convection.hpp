@@ -10,13 +10,19 @@
 //   van_leer, koren: upwind value plus a limited anti-diffusive correction (TVD, bounded; for high Re),
 //            phi_f = phi_U + 1/2 psi(r) (phi_D - phi_U),  r = (phi_U - phi_UU) / (phi_D - phi_U).
 // The v equation is the same with x and y exchanged.
+#include <array>
+
 #include "field.hpp"
 #include "flow_config.hpp"
 
 namespace chute {
 
 // out(i, j) = -C(i, j) on the faces [u_first, nx) x [0, ny) for u and [0, nx) x [v_first, ny) for v.
-void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first,
-                Velocity& out);
+// On a grid that translates at `frame` (the body-fitted grid carried by its block; arbitrary Lagrangian-Eulerian
+// form, Donea et al. 2004) the transporting velocities are relative to the grid, U - w and V - w, while the
+// transported velocity stays the inertial one. A rigid translation keeps every cell's area (the geometric
+// conservation law holds trivially).
+void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
+                std::array<double, 2> frame = {0.0, 0.0});
 
 }  // namespace chute

@@ -28,7 +28,9 @@ double max_divergence(const Grid& grid, const Velocity& vel, const Field2D* flui
     double m = 0.0;
     for (int j = 0; j < grid.ny(); ++j)
         for (int i = 0; i < grid.nx(); ++i)
-            if (!fluid || (*fluid)(i, j) != 0.0) m = std::max(m, std::abs(cell_divergence(grid, vel, i, j)));
+            if (!fluid || (*fluid)(i, j) != 0.0) {
+                m = std::max(m, std::abs(cell_divergence(grid, vel, i, j)));
+            }
     MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
     return m;
 }

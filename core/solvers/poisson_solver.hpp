@@ -10,9 +10,10 @@
 // made zero-mean, the preconditioner's output is projected onto zero-mean vectors (without this PCG
 // breaks down on stretched grids: PFMG does not keep the null space out), and the solution's mean is
 // removed. The matrix is kept as it is (STACK.md: pinning a cell slows PFMG five-fold).
-// Solid cells (core/grid/solid_cells.hpp, a body-fitted hole) are left out: their rows are the identity with
-// a zero right-hand side, and no flux crosses their sides (Neumann); the null space and the means are then
-// those of the fluid cells.
+// Solid cells (core/grid/solid_cells.hpp, a body-fitted hole) are left out: their rows are the identity (scaled
+// like a Laplacian row there) with a zero right-hand side, and no flux crosses their sides (Neumann); the null
+// space and the means are the fluid cells'. With solid cells on a grid with no periodic direction the
+// preconditioner is SMG instead of PFMG (update_matrix() says why).
 #include <HYPRE_struct_ls.h>
 
 #include <array>
@@ -61,6 +62,8 @@ private:
     std::vector<double> buffer_;
     const Field2D* fluid_ = nullptr;  // 1 in fluid cells, 0 in solid ones (null: all fluid)
     double fluid_cells_ = 0.0;        // global count of fluid cells
+    double solid_cells_ = 0.0;        // and of solid ones
+    bool smg_ = false;                // the preconditioner (pfmg_) is SMG: there are solid cells
     std::array<int, 2> lower_{}, upper_{};
 };
 

@@ -51,7 +51,8 @@ TEST(SolidCells, BedBlockIsTheDomainWall) {
     FlowSolver block(holed, MPI_COMM_WORLD);
     SolidCells solid(block.grid());
     solid.set({SolidBlock{.lower = {0, 0}, .upper = {24, 8}, .velocity = {bed_speed, 0.0}}});
-    block.set_solid_cells(&solid);
+    block.set_solid_cells(&solid);  // projects the start against the block
+    wall.project_start();           // the same for the walled channel
     for (int k = 0; k < 150; ++k) {
         wall.advance();
         block.advance();
