@@ -125,9 +125,10 @@ void read_boundary(const CaseReader& r, int s, BoundaryConfig& b) {
             r.fail(p + ".velocity",
                    "missing required key (an inflow with profile: uniform needs its velocity; or "
                    "use profile: parabolic with a peak)");
-        if (!(inward * b.velocity[normal] > 0.0))
-            r.fail(p + ".velocity", "an inflow must enter the domain: on the " + side + " side " + component +
-                                        " must be " + (inward > 0 ? "> 0" : "< 0") + ", got " +
+        // 0 is water at rest: what a grid carried by a body-fitted block meets ahead of it.
+        if (!(inward * b.velocity[normal] >= 0.0))
+            r.fail(p + ".velocity", "an inflow must enter the domain (or be water at rest): on the " + side + " side " +
+                                        component + " must be " + (inward > 0 ? ">= 0" : "<= 0") + ", got " +
                                         exact_text(b.velocity[normal]));
     }
 }
@@ -305,8 +306,10 @@ std::vector<CaseKey> flow_keys() {
          .when_key = "type",
          .when_values = {"wall", "inflow"},
          .units = "m/s",
-         .meaning = "Wall: the wall's own velocity, along the wall (normal component 0). Inflow with "
-                    "`profile: uniform`: the inflow velocity (required there), pointing into the domain."},
+         .meaning =
+             "Wall: the wall's own velocity, along the wall (normal component 0). Inflow with "
+             "`profile: uniform`: the inflow velocity (required there), pointing into the domain, or 0: water at rest, "
+             "which a grid carried by a moving body_fitted body meets ahead of it."},
         {.path = "boundaries.<side>.profile",
          .type = K::choice,
          .default_value = "uniform",

@@ -85,11 +85,11 @@ def plot_fields(run_dir):
     vi = np.array([np.interp(ys, yc, col) for col in vi.T]).T
     ax[0].streamplot(xs, ys, ui, vi, color="w", density=1.2, linewidth=0.5, arrowsize=0.6)
     fig.colorbar(m, ax=ax[0], label="speed (m/s)")
-    lim = np.percentile(np.abs(w), 99) or 1.0
+    lim = np.nanpercentile(np.abs(w), 99) or 1.0
     m = ax[1].pcolormesh(x, y, w, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="flat")
     fig.colorbar(m, ax=ax[1], label="vorticity (1/s)")
     # The lid corners of a cavity (and sharp edges later) are pressure singularities: clip the colour scale.
-    lo, hi = np.percentile(p, [1, 99])
+    lo, hi = np.nanpercentile(p, [1, 99])
     m = ax[2].pcolormesh(x, y, p, cmap="coolwarm", vmin=lo, vmax=hi, shading="flat")
     fig.colorbar(m, ax=ax[2], label="dynamic pressure (Pa)")
     for a, title in zip(ax, ["speed and streamlines", "vorticity", "pressure"]):
@@ -128,7 +128,7 @@ def plot_body(run_dir, name, b, fields_file):
                      (["cx_turbulent", "cy_turbulent"] if turbulent else []))):
         values = np.concatenate([b[k][len(t) // 20:] for k in keys]) if len(t) > 20 else None
         if values is not None and values.size:
-            lo, hi = np.percentile(values, [0.5, 99.5])
+            lo, hi = np.nanpercentile(values, [0.5, 99.5])
             pad = 0.1 * (hi - lo) or 0.1 * max(abs(hi), 1e-12)
             a.set_ylim(lo - pad, hi + pad)
     slip = b["max_slip"][1:] > 0
@@ -150,7 +150,7 @@ def plot_body(run_dir, name, b, fields_file):
     cx, cy = b["x"][k], b["y"][k]
     half = 0.125 * np.hypot(x[-1] - x[0], y[-1] - y[0])
     fig, a = plt.subplots(figsize=(7, 5))
-    lim = np.percentile(np.abs(w), 99.5) or 1.0
+    lim = np.nanpercentile(np.abs(w), 99.5) or 1.0
     m = a.pcolormesh(x, y, w, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="flat")
     fig.colorbar(m, ax=a, label="vorticity (1/s)")
     a.set_xlim(max(x[0], cx - half), min(x[-1], cx + 2 * half))
@@ -189,7 +189,7 @@ def plot_trajectory(run_dir, name, b):
     if "fy_turbulent" in b and np.any(b["fy_turbulent"] != 0):
         ax[2].plot(t, b["fy_turbulent"], "--", label="turbulent (y)")
     values = np.concatenate([b["fy_forcing"], b["fy_gravity"] + b["fy_buoyancy"]])
-    lo, hi = np.percentile(values, [1, 99])
+    lo, hi = np.nanpercentile(values, [1, 99])
     pad = 0.2 * (hi - lo) or 1.0
     ax[2].set_ylim(lo - pad, hi + pad)  # impacts give spikes of many times the weight
     ax[2].set_ylabel("force (N)")

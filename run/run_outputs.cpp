@@ -205,6 +205,14 @@ void RunOutputs::write_fields() {
     const Field2D& p = flow.pressure();
     for (int j = -kGhost; j < grid.ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid.nx() + kGhost; ++i) pressure_pa_(i, j) = model_.config().density * p(i, j);
+    // A body-fitted hole holds no flow: its cells are written as NaN (blank in ParaView and the plots), not the
+    // ghost values its faces carry for the stencils beside it.
+    if (const Field2D* fluid = flow.fluid_cells())
+        for (int j = 0; j < grid.ny(); ++j)
+            for (int i = 0; i < grid.nx(); ++i)
+                if ((*fluid)(i, j) == 0.0)
+                    uc_(i, j) = vc_(i, j) = pressure_pa_(i, j) = omega_(i, j) =
+                        std::numeric_limits<double>::quiet_NaN();
     std::vector<NamedField> out = {{"u", &uc_}, {"v", &vc_}, {"p", &pressure_pa_}, {"vorticity", &omega_}};
     if (const KEpsilon* turbulence = model_.turbulence()) {
         out.push_back({"k", &turbulence->k()});

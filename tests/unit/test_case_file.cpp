@@ -347,7 +347,7 @@ TEST(CaseFile, InflowChecks) {
     expect_message(error_of(inflow), {"boundaries.left.type", "needs an outflow"});
     EXPECT_NO_THROW(parse_case_text(inflow, {"boundaries.right={type: outflow}"}));
     expect_message(error_of(inflow, {"boundaries.right={type: outflow}", "boundaries.left.velocity=[-1, 0]"}),
-                   {"boundaries.left.velocity", "must enter the domain", "velocity[0] must be > 0"});
+                   {"boundaries.left.velocity", "must enter the domain", "velocity[0] must be >= 0"});
     expect_message(error_of(inflow, {"boundaries.right={type: outflow}", "boundaries.left.profile=parabolic"}),
                    {"boundaries.left.peak", "missing required key"});
 }

@@ -1,5 +1,5 @@
 #pragma once
-// A flow with immersed bodies, the model run_simulation builds (run/model.hpp) stepped as it steps it
+// A flow with bodies (immersed or body-fitted), the model run_simulation builds (run/model.hpp) stepped as it steps it
 // (run/step.hpp), with the force histories the validation tests average. Tests see what users run.
 #include <mpi.h>
 
@@ -35,7 +35,8 @@ public:
     BodyRun(const CaseConfig& c, MPI_Comm comm)
         : model(c, comm),
           solver(model.flow()),
-          ibm(dynamic_cast<ImmersedBoundary&>(model.carrier())),
+          carrier(model.carrier()),
+          ibm(dynamic_cast<ImmersedBoundary*>(&model.carrier())),
           free(model.free_bodies()),
           turbulence(model.turbulence()) {}
 
@@ -61,7 +62,8 @@ public:
 
     Model model;
     FlowSolver& solver;
-    ImmersedBoundary& ibm;
+    Carrier& carrier;
+    ImmersedBoundary* ibm;  // when the bodies are immersed (null: body-fitted)
     FreeBodies& free;
     KEpsilon* turbulence;  // when the case asks for k-epsilon
     std::vector<BodyForces> last;

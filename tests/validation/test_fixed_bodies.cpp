@@ -49,7 +49,7 @@ Coefficients dfg_2d1(int cells_per_d, double t_end) {
     r.slip = run.last[0].max_slip / 0.3;
     // Delta p = p(0.15, 0.2) - p(0.25, 0.2): the wall pressure at the front and back of the cylinder,
     // extrapolated to the surface from the fluid side (inside the kernel's reach the field is smeared).
-    const SurfaceStress& s = run.ibm.surface_stress(0);
+    const SurfaceStress& s = run.ibm->surface_stress(0);
     auto wall_p = [&](const Vec2& at) {
         std::size_t best = 0;
         for (std::size_t l = 0; l < s.points().size(); ++l)

@@ -26,7 +26,7 @@ CaseConfig disc_in_box(double density) {
 TEST(FreeBodies, NeutrallyBuoyantDiscStaysAtRest) {
     BodyRun run(disc_in_box(1000.0), MPI_COMM_WORLD);
     for (int k = 0; k < 50; ++k) run.step(0.002);
-    const BodyState& s = run.ibm.bodies()[0].state();
+    const BodyState& s = run.carrier.bodies()[0].state();
     EXPECT_LT(s.velocity.norm(), 1e-12);
     EXPECT_LT((s.centre - Vec2(0.25, 0.25)).norm(), 1e-12);
 }
@@ -57,9 +57,9 @@ TEST(FreeBodies, LightDiscRisesWithItsAddedMass) {
 
     BodyRun run(with("density: 500.0, motion: {type: free}"), MPI_COMM_WORLD);
     run.run_to(t0, 0.0005);
-    const double v0 = run.ibm.bodies()[0].state().velocity.y();
+    const double v0 = run.carrier.bodies()[0].state().velocity.y();
     run.run_to(t1, 0.0005);
-    const BodyState& s = run.ibm.bodies()[0].state();
+    const BodyState& s = run.carrier.bodies()[0].state();
     const double a_mean = (s.velocity.y() - v0) / (t1 - t0);
     const double a_coupled = (m_f - m_s) * 9.81 / (m_s + ca * m_f),
                  a_potential = (m_f - m_s) * 9.81 / (m_s + 1.02 * m_f);
@@ -92,7 +92,7 @@ TEST(FreeBodies, StudyBlockStartsWithItsPotentialFlowAcceleration) {
                                     "domain.y={start: -2.5, end: 1.0, cells: 467}", "time.end=0.1"});
     BodyRun run(c, MPI_COMM_WORLD);
     run.step();
-    const double a_first = -run.ibm.bodies()[0].state().acceleration.y();
+    const double a_first = -run.carrier.bodies()[0].state().acceleration.y();
     const double first_dt = run.solver.time();
     run.run_to(0.1);
     const double m_f = 1000.0 * 0.3 * 0.3, m_s = 2.5 * m_f, ca = 1.1885;
@@ -121,7 +121,7 @@ TEST(FreeBodies, SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber) {
     int n = 0;
     while (run.solver.time() < 0.5 - 1e-12) {
         run.step();
-        if (run.solver.time() >= 0.45) sum += run.ibm.bodies()[0].state().velocity.y(), ++n;
+        if (run.solver.time() >= 0.45) sum += run.carrier.bodies()[0].state().velocity.y(), ++n;
     }
     const double U = -sum / n, re_solid = 1250.0 * U * 0.0025 / 0.01;
     if (root())
@@ -129,7 +129,7 @@ TEST(FreeBodies, SettlingDiscReachesTheGlowinskiTerminalReynoldsNumber) {
                     re_solid / 1.25);
     EXPECT_NEAR(re_solid, 17.3, 0.05 * 17.3);
     // It falls on the channel's axis (to 1 % of d: the markers are not exactly mirror-symmetric).
-    EXPECT_NEAR(run.ibm.bodies()[0].state().centre.x(), 0.01, 0.01 * 0.0025);
+    EXPECT_NEAR(run.carrier.bodies()[0].state().centre.x(), 0.01, 0.01 * 0.0025);
 }
 
 // A free body that starts inside an obstacle (or within contact.distance of it) is a case error naming it.
@@ -173,7 +173,7 @@ ImpactRecord first_impact(const std::string& example, std::vector<std::string> s
         }
         times.push_back(run.solver.time());
         forces.push_back(f[0].forcing);
-        velocities.push_back(run.ibm.bodies()[0].state().velocity);
+        velocities.push_back(run.carrier.bodies()[0].state().velocity);
         if (run.solver.time() > 3.0) break;  // no impact: the checks below fail on the NaNs
     }
     for (std::size_t k = 0; k < times.size(); ++k)

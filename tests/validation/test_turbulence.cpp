@@ -157,7 +157,7 @@ TEST(Turbulence, StudyBlockFallsAtTheExperimentsSpeed) {
     std::vector<std::pair<double, double>> fall;  // (t, downward speed)
     while (run.solver.time() < c.end_time - 1e-12) {
         run.step();
-        fall.emplace_back(run.solver.time(), -run.ibm.bodies()[0].state().velocity.y());
+        fall.emplace_back(run.solver.time(), -run.carrier.bodies()[0].state().velocity.y());
     }
     double sum = 0.0, lo = 1e30, hi = -1e30;
     int n = 0;
