@@ -73,6 +73,25 @@ auto parallel_and_serial(Run run) {
     return std::pair{parallel, serial};
 }
 
+// Body 0's force (a) and the pressure and viscous parts of (b) after `steps` steps of `dt`.
+std::array<double, 6> forces_after(Model& model, int steps, double dt) {
+    std::vector<BodyForces> f;
+    for (int k = 0; k < steps; ++k) {
+        take_step(model, dt);
+        f = measure_forces(model);
+    }
+    const BodyForces& b = f.at(0);
+    return {b.forcing.x(),          b.forcing.y(),         b.surface.pressure.x(),
+            b.surface.pressure.y(), b.surface.viscous.x(), b.surface.viscous.y()};
+}
+
+// The largest difference between the parallel and the serial forces, relative to the serial drag (a).
+double worst_force_difference(const std::array<double, 6>& parallel, const std::array<double, 6>& serial) {
+    double worst = 0.0;
+    for (int k = 0; k < 6; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / std::abs(serial[0]));
+    return worst;
+}
+
 CaseConfig cavity() {
     CaseConfig c;
     c.x = AxisConfig{0.0, 1.0, 48, "tanh", 1.2, 1.05, {}};
@@ -203,20 +222,11 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
         CaseConfig cc = c;
         cc.ranks = ranks;
         Model model(cc, comm);
-        std::vector<BodyForces> f;
-        for (int k = 0; k < 60; ++k) {
-            take_step(model, 0.002);
-            f = measure_forces(model);
-        }
-        const BodyForces& b = f[0];
-        return std::array<double, 6>{b.forcing.x(),          b.forcing.y(),         b.surface.pressure.x(),
-                                     b.surface.pressure.y(), b.surface.viscous.x(), b.surface.viscous.y()};
+        return forces_after(model, 60, 0.002);
     };
     // Two patches split in y: 82 cells at 41 puts the patch boundary at y = 0.205, through the cylinder.
     const auto [parallel, serial] = parallel_and_serial(run);
-    const double scale = std::abs(serial[0]);
-    double worst = 0.0;
-    for (int k = 0; k < 6; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / scale);
+    const double worst = worst_force_difference(parallel, serial);
     if (rank() == 0)
         std::printf(
             "fixed cylinder, np=2 (split in y through the cylinder) vs np=1: max force difference %.2e of "
@@ -312,19 +322,10 @@ TEST(Parallel, BodyFittedSquareMatchesOneRank) {
             CaseConfig cc = c;
             cc.ranks = comm == MPI_COMM_SELF ? ranks : split;
             Model model(cc, comm);
-            std::vector<BodyForces> f;
-            for (int k = 0; k < 40; ++k) {
-                take_step(model, 0.01);
-                f = measure_forces(model);
-            }
-            const BodyForces& b = f[0];
-            return std::array<double, 6>{b.forcing.x(),          b.forcing.y(),         b.surface.pressure.x(),
-                                         b.surface.pressure.y(), b.surface.viscous.x(), b.surface.viscous.y()};
+            return forces_after(model, 40, 0.01);
         };
         const auto [parallel, serial] = parallel_and_serial(run);
-        const double scale = std::abs(serial[0]);
-        double worst = 0.0;
-        for (int k = 0; k < 6; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / scale);
+        const double worst = worst_force_difference(parallel, serial);
         if (rank() == 0)
             std::printf(
                 "body-fitted square, np=2 split %dx%d through it vs np=1: max force difference %.2e of the drag\n",
