@@ -92,6 +92,19 @@ double worst_force_difference(const std::array<double, 6>& parallel, const std::
     return worst;
 }
 
+// A channel 8 x 4 from x_start, 16 cells per metre, a uniform stream of 1 m/s from the left between slip walls.
+CaseConfig stream_channel(double x_start) {
+    CaseConfig c;
+    c.x = AxisConfig{x_start, x_start + 8.0, 128, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{-2.0, 2.0, 64, "uniform", 2.0, 1.05, {}};
+    c.boundary[0] =
+        BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
+    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
+    c.boundary[2].type = c.boundary[3].type = BoundaryType::slip;
+    c.initial_velocity = {1.0, 0.0};
+    return c;
+}
+
 CaseConfig cavity() {
     CaseConfig c;
     c.x = AxisConfig{0.0, 1.0, 48, "tanh", 1.2, 1.05, {}};
@@ -239,14 +252,7 @@ TEST(Parallel, FixedCylinderForcesMatchOneRank) {
 // three parts of the surface stress) and k match the single-rank run to the linear-solver tolerance.
 TEST(Parallel, KEpsilonSquareMatchesOneRank) {
     if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
-    CaseConfig c;
-    c.x = AxisConfig{-2.0, 6.0, 128, "uniform", 2.0, 1.05, {}};
-    c.y = AxisConfig{-2.0, 2.0, 64, "uniform", 2.0, 1.05, {}};
-    c.boundary[0] =
-        BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
-    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
-    c.boundary[2].type = c.boundary[3].type = BoundaryType::slip;
-    c.initial_velocity = {1.0, 0.0};
+    CaseConfig c = stream_channel(-2.0);
     c.viscosity = 1e-5;
     c.density = 1.0;
     c.convection = ConvectionScheme::van_leer;
@@ -297,14 +303,7 @@ TEST(Parallel, KEpsilonSquareMatchesOneRank) {
 // over ranks. The same forces as on one rank to the Poisson tolerance.
 TEST(Parallel, BodyFittedSquareMatchesOneRank) {
     if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
-    CaseConfig c;
-    c.x = AxisConfig{-4.0, 4.0, 128, "uniform", 2.0, 1.05, {}};
-    c.y = AxisConfig{-2.0, 2.0, 64, "uniform", 2.0, 1.05, {}};
-    c.boundary[0] =
-        BoundaryConfig{BoundaryType::inflow, {1.0, 0.0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
-    c.boundary[1] = BoundaryConfig{BoundaryType::outflow, {0, 0}, InflowProfile::uniform, 0.0, OutflowKind::convective};
-    c.boundary[2].type = c.boundary[3].type = BoundaryType::slip;
-    c.initial_velocity = {1.0, 0.0};
+    CaseConfig c = stream_channel(-4.0);
     c.initial_perturbation = 0.05;
     c.viscosity = 0.01;
     c.density = 1.0;
