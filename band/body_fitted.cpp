@@ -10,10 +10,6 @@ namespace chute {
 
 BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std::vector<Body>& bodies)
     : grid_(grid), settings_(settings), bodies_(bodies), solid_(grid) {
-    if (settings_.turbulent)
-        throw std::invalid_argument(
-            "turbulence.model: body_fitted bodies are carried in laminar flow in this version (the wall functions on "
-            "the hole's sides come with the moving grid)");
     std::vector<SolidBlock> blocks;
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
         const Body& body = bodies_[k];
@@ -75,21 +71,17 @@ void BodyFitted::place(double t) {
     follow();
 }
 
-SurfaceForces BodyFitted::stress(std::size_t b, const Velocity& vel, const Field2D& p) const {
-    return hole_stress(grid_, solid_.blocks()[b], bodies_[b].state(), vel, p, settings_.density, settings_.viscosity,
-                       settings_.depth);
-}
-
 Wrench BodyFitted::hydrodynamic_wrench(std::size_t b, const Velocity&, double) {
     // Only free bodies are moved by a wrench, and the constructor refuses them.
     throw std::logic_error("BodyFitted::hydrodynamic_wrench: body " + bodies_[b].name() +
                            " is not free (free body_fitted bodies come with the moving grid)");
 }
 
-std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& p, const WallTurbulence*) {
+std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) {
     std::vector<BodyForces> out(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        out[b].surface = stress(b, vel, p);
+        out[b].surface = hole_stress(grid_, solid_.blocks()[b], bodies_[b].state(), vel, p, settings_.density,
+                                     settings_.viscosity, settings_.depth, turbulence);
         const std::array<double, 2> m = flow_->solid_momentum_rate(solid_.blocks()[b]);
         out[b].forcing = settings_.density * settings_.depth * Vec2(m[0], m[1]);
         out[b].forcing_torque = out[b].surface.total_torque();
@@ -97,9 +89,37 @@ std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& 
     return out;
 }
 
-std::vector<WallSample> BodyFitted::sample_walls(const Velocity&, const Field2D&) const {
-    // Turbulence is refused in the constructor.
-    throw std::logic_error("BodyFitted::sample_walls: no turbulence model with body_fitted bodies in this version");
+// The fluid cells along each side: the wall-adjacent cells of a body-fitted mesh, sampled at their own centre,
+// half a cell from the side (turbulence/k_epsilon.cpp: production and epsilon from the log law there).
+std::vector<WallSample> BodyFitted::sample_walls(const Velocity& vel, const Field2D& k) const {
+    std::vector<WallSample> out;
+    const Axis& X = grid_.x_axis();
+    const Axis& Y = grid_.y_axis();
+    const int ox = grid_.lx().offset, oy = grid_.ly().offset;
+    auto owned = [&](int i, int j) { return i >= 0 && i < grid_.nx() && j >= 0 && j < grid_.ny(); };
+    for (const SolidBlock& h : solid_.blocks()) {
+        for (const bool top : {false, true}) {
+            const int gj = top ? h.upper[1] : h.lower[1] - 1;
+            const double y = 0.5 * Y.width(gj);
+            for (int gi = h.lower[0]; gi < h.upper[0]; ++gi) {
+                const int i = gi - ox, j = gj - oy;
+                if (!owned(i, j)) continue;
+                const double slip = std::abs(0.5 * (vel.u(i, j) + vel.u(i + 1, j)) - h.velocity[0]);
+                out.push_back({i, j, y, 2.0 * y, y, slip, k(i, j), true});
+            }
+        }
+        for (const bool right : {false, true}) {
+            const int gi = right ? h.upper[0] : h.lower[0] - 1;
+            const double y = 0.5 * X.width(gi);
+            for (int gj = h.lower[1]; gj < h.upper[1]; ++gj) {
+                const int i = gi - ox, j = gj - oy;
+                if (!owned(i, j)) continue;
+                const double slip = std::abs(0.5 * (vel.v(i, j) + vel.v(i, j + 1)) - h.velocity[1]);
+                out.push_back({i, j, y, 2.0 * y, y, slip, k(i, j), true});
+            }
+        }
+    }
+    return out;
 }
 
 }  // namespace chute

@@ -12,8 +12,9 @@
 // A body with prescribed translation carries the whole grid with it (ALE: the grid translates rigidly at the
 // body's velocity, the convective fluxes are relative to it, and the domain's boundaries keep the conditions of
 // the inertial frame: water at rest ahead of the block, an outflow behind), as the study's body-fitted
-// OpenFOAM runs of a fall do. This version takes one moving body, prescribed (not free), without rotation, in
-// laminar flow; the rest is refused with an error naming the key.
+// OpenFOAM runs of a fall do. This version takes one moving body, prescribed (not free), without rotation; the
+// rest is refused with an error naming the key. With k-epsilon the cells along the sides are the wall-adjacent
+// cells of the log law (sample_walls), as a body-fitted mesh's first cells are.
 #include <vector>
 
 #include "carrier.hpp"
@@ -49,8 +50,6 @@ public:
     void attach(FlowSolver& flow) override;
 
 private:
-    SurfaceForces stress(std::size_t b, const Velocity& vel, const Field2D& p) const;
-
     const Grid& grid_;
     BodyFittedSettings settings_;
     std::vector<Body>& bodies_;

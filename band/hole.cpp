@@ -46,9 +46,6 @@ SolidBlock hole_of(const Body& body, const Grid& grid) {
                line_at(Y, centre.y() - hh, name, "bottom", "domain.y")};
     b.upper = {line_at(X, centre.x() + hw, name, "right", "domain.x"),
                line_at(Y, centre.y() + hh, name, "top", "domain.y")};
-    if (b.lower[0] < 2 || b.lower[1] < 2 || b.upper[0] > X.cells() - 2 || b.upper[1] > Y.cells() - 2)
-        throw std::invalid_argument("bodies." + name +
-                                    ": a body_fitted body must stay at least two cells from the domain's sides");
     b.velocity = {body.state().velocity.x(), body.state().velocity.y()};
     return b;
 }

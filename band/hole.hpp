@@ -9,8 +9,8 @@
 namespace chute {
 
 // The cells of `body` as a solid block, with its velocity. std::invalid_argument naming the body when it is
-// not an unrotated rectangle, a side is not on a grid line (to 1e-6 of the cell there), or the hole is closer
-// than two cells to a side of the domain.
+// not an unrotated rectangle, or a side is not on a grid line (to 1e-6 of the cell there). A side may lie on the
+// domain's boundary (a bed block on the bottom wall, or across a periodic direction).
 SolidBlock hole_of(const Body& body, const Grid& grid);
 
 }  // namespace chute

@@ -90,9 +90,9 @@ std::vector<CaseKey> body_keys() {
          .default_value = "immersed",
          .choices = {"immersed", "body_fitted"},
          .meaning = "How the flow carries the body (docs/design.md): `immersed`, markers and forcing on the fixed "
-                    "grid; `body_fitted`, a hole in the grid whose sides are grid lines (an unrotated rectangle "
-                    "whose sides lie on grid lines, at least two cells from the domain's sides; fixed bodies and "
-                    "laminar flow in this version). Every body of a run is carried the same way."},
+                    "grid; `body_fitted`, a hole in the grid (an unrotated rectangle whose sides lie on grid lines; "
+                    "fixed, or translating with the whole grid carried along; not free in this version). Every "
+                    "body of a run is carried the same way."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "

@@ -154,7 +154,7 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
     const bool cfl_only = config_.diffusion == DiffusionScheme::implicit_euler ||
-                          (config_.diffusion == DiffusionScheme::automatic && eddy_on_);
+                          (config_.diffusion == DiffusionScheme::automatic && eddy_on_ && !fluid_cells());
     const double nu = cfl_only ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
     const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number, frame_);
     return std::min(limits.stable(), config_.max_dt);
@@ -177,7 +177,9 @@ bool FlowSolver::implicit_step(double dt) const {
         case DiffusionScheme::automatic:
             break;
     }
-    if (!eddy_on_) return false;
+    // The implicit solve does not know a hole's walls yet: with solid cells `auto` stays explicit (and the step
+    // keeps to the diffusion limit, next_dt()).
+    if (!eddy_on_ || fluid_cells()) return false;
     return dt > (implicit_now_ ? 2.0 / 3.0 : 1.0) * diffusion_limit();
 }
 
@@ -257,7 +259,7 @@ double FlowSolver::predict(double dt) {
     if (implicit_now_) {
         if (fluid_cells())
             throw std::invalid_argument(
-                "implicit diffusion is not available with a body-fitted body yet: set numerics.diffusion: explicit");
+                "numerics.diffusion: implicit is not available with a body_fitted body yet (use explicit or auto)");
         if (!implicit_) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
         halo_->exchange(star_);
         bc_->apply(star_);

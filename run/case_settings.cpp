@@ -6,9 +6,7 @@ ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
     return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
 }
 
-BodyFittedSettings body_fitted_settings(const CaseConfig& c) {
-    return {c.density, c.viscosity, c.depth, c.turbulence.model != TurbulenceModelType::laminar};
-}
+BodyFittedSettings body_fitted_settings(const CaseConfig& c) { return {c.density, c.viscosity, c.depth}; }
 
 FreeBodySettings free_body_settings(const CaseConfig& c) {
     return {c.contact,  Vec2(c.gravity[0], c.gravity[1]),    c.density, c.depth, c.ibm.virtual_mass,

@@ -287,7 +287,11 @@ void KEpsilon::refresh_eddy_viscosity() {
             model_nu_t_(i, j) = fluid(i, j) != 0.0 ? C::c_mu * k_(i, j) * k_(i, j) / eps_(i, j) : 0.0;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) e.cell(i, j) = model_nu_t_(i, j);
-    for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
+    // Beside an immersed surface the near-wall band takes at least the wall's eddy viscosity; a body-fitted
+    // hole's sides are walls like the domain's (their corners below).
+    const SolidCells* holes = flow_.solid_cells();
+    if (!holes)
+        for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
     set_ghosts(e.cell, nullptr);  // zero gradient across every domain side
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i)
@@ -312,11 +316,44 @@ void KEpsilon::refresh_eddy_viscosity() {
                     0.5 * (WallFunction(k_(i, j - 1), y, nu).nu_wall + WallFunction(k_(i, j), y, nu).nu_wall);
         }
     }
+    if (holes) set_hole_corners(*holes);
     double mx = 0.0;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) mx = std::max(mx, e.cell(i, j));
     MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
     e.max = mx;
+}
+
+// The corners along a body-fitted hole's sides carry the wall eddy viscosity of the two fluid cells beside
+// them, as the domain's walls do (refresh_eddy_viscosity); a side's two end corners keep their average.
+void KEpsilon::set_hole_corners(const SolidCells& holes) {
+    EddyViscosity& e = flow_.eddy_viscosity();
+    const double nu = settings_.viscosity;
+    const Axis& X = grid_.x_axis();
+    const Axis& Y = grid_.y_axis();
+    const int ox = grid_.lx().offset, oy = grid_.ly().offset, nx = grid_.nx(), ny = grid_.ny();
+    // Corner (gi, gj) between fluid cells a and b, each y from the side.
+    auto set = [&](int gi, int gj, std::array<int, 2> a, std::array<int, 2> b, double y) {
+        const int i = gi - ox, j = gj - oy;
+        if (i < 0 || i > nx || j < 0 || j > ny) return;
+        const double ka = k_(a[0] - ox, a[1] - oy), kb = k_(b[0] - ox, b[1] - oy);
+        e.corner(i, j) = 0.5 * (WallFunction(ka, y, nu).nu_wall + WallFunction(kb, y, nu).nu_wall);
+    };
+    // A block across a whole periodic direction has no ends there: every corner of its side is a wall corner.
+    auto spans = [](const Axis& a, int lo, int hi) { return a.periodic() && lo <= 0 && hi >= a.cells(); };
+    for (const SolidBlock& h : holes.blocks()) {
+        const int end_x = spans(X, h.lower[0], h.upper[0]) ? 0 : 1, end_y = spans(Y, h.lower[1], h.upper[1]) ? 0 : 1;
+        for (const bool top : {false, true}) {  // corners on the bottom and top sides, fluid row below / above
+            const int gj = top ? h.upper[1] : h.lower[1], row = top ? h.upper[1] : h.lower[1] - 1;
+            const double y = 0.5 * Y.width(row);
+            for (int gi = h.lower[0] + end_x; gi <= h.upper[0] - end_x; ++gi) set(gi, gj, {gi - 1, row}, {gi, row}, y);
+        }
+        for (const bool right : {false, true}) {  // corners on the left and right sides
+            const int gi = right ? h.upper[0] : h.lower[0], col = right ? h.upper[0] : h.lower[0] - 1;
+            const double y = 0.5 * X.width(col);
+            for (int gj = h.lower[1] + end_y; gj <= h.upper[1] - end_y; ++gj) set(gi, gj, {col, gj - 1}, {col, gj}, y);
+        }
+    }
 }
 
 std::optional<std::string> KEpsilon::check() const {

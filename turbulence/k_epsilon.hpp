@@ -76,6 +76,7 @@ private:
         bool wall_function;  // 0 <= d < h: epsilon and the production of k come from the wall function
     };
     void sample_walls();
+    void set_hole_corners(const SolidCells& holes);
     struct WallCell {
         int i, j;
         double y;           // distance the log law is applied at

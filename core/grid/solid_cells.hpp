@@ -12,8 +12,9 @@
 //                                             limiters a field without a jump
 //   every other face inside                   U
 //
-// Corners take the value of the side whose normal face they are. Blocks must not touch each other or the
-// domain's boundary (the carrier checks; a mirror that falls outside this patch's halo takes U).
+// Corners take the value of the side whose normal face they are. Blocks must not touch each other (the carrier
+// checks); a side may lie on the domain's boundary, where the faces are the boundary's and the block's mirrors
+// only feed its own interior. A mirror that falls outside this patch's halo takes U (its owner fills it).
 #include <array>
 #include <vector>
 
