@@ -203,7 +203,7 @@ void KEpsilon::update(double dt) {
             set_ghosts(eps_, &eps_in_);
         }
         scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
-                         {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}});
+                         {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}}, flow_.frame_velocity());
         for (int j = 0; j < grid_.ny(); ++j)
             for (int i = 0; i < grid_.nx(); ++i) {
                 if (fluid(i, j) == 0.0) continue;

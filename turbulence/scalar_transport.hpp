@@ -10,6 +10,7 @@
 // immersed body: `fluid` = 0) carry no flux, convective or diffusive: the immersed surface is a zero-flux
 // wall for the scalar, and the wall functions set the near-wall cells (immersed_wall.hpp).
 // Each face is visited once for all the scalars (they share the velocity, the mask and nu_t).
+#include <array>
 #include <vector>
 
 #include "field.hpp"
@@ -22,8 +23,9 @@ struct TransportedScalar {
     Field2D* out;        // T(phi) on owned cells (0 in solid cells)
 };
 
-// nu_t and fluid need valid ghosts.
+// nu_t and fluid need valid ghosts. `frame`: the grid's velocity (a grid carried by a body-fitted block): the
+// scalars are carried by the velocity relative to the grid, as the momentum is (core/operators/convection.hpp).
 void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& nu_t, double nu, const Field2D& fluid,
-                      const std::vector<TransportedScalar>& scalars);
+                      const std::vector<TransportedScalar>& scalars, std::array<double, 2> frame = {0.0, 0.0});
 
 }  // namespace chute
