@@ -24,7 +24,6 @@ namespace chute {
 
 struct BodyFittedSettings {
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
-    bool turbulent = false;                                  // turbulence.model is not laminar
 };
 
 class BodyFitted final : public Carrier {
