@@ -1,5 +1,6 @@
 #include "flow_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -100,14 +101,18 @@ std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const
     const auto& Y = grid_->ly();
     const int ox = X.offset, oy = Y.offset;
     double m[2] = {0.0, 0.0};
-    for (int j = 0; j < grid_->ny(); ++j)
-        for (int i = 0; i < grid_->nx(); ++i) {
-            const int gi = i + ox, gj = j + oy;
-            if (gi >= b.lower[0] && gi <= b.upper[0] && gj >= b.lower[1] && gj < b.upper[1]) {
+    // The owned faces of the block only: u faces on lines lower[0]..upper[0] across its rows, v faces on lines
+    // lower[1]..upper[1] across its columns.
+    const int i0 = std::max(b.lower[0] - ox, 0), j0 = std::max(b.lower[1] - oy, 0);
+    const int i1 = std::min(b.upper[0] - ox, grid_->nx() - 1), j1 = std::min(b.upper[1] - oy, grid_->ny() - 1);
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            const bool u_face = j + oy < b.upper[1], v_face = i + ox < b.upper[0];
+            if (u_face) {
                 const double H = weight_new_ * rhs_old_.u(i, j) + weight_old_ * rhs_.u(i, j);
                 m[0] += X.dc(i) * Y.w(j) * (H - (p_(i, j) - p_(i - 1, j)) / X.dc(i));
             }
-            if (gi >= b.lower[0] && gi < b.upper[0] && gj >= b.lower[1] && gj <= b.upper[1]) {
+            if (v_face) {
                 const double H = weight_new_ * rhs_old_.v(i, j) + weight_old_ * rhs_.v(i, j);
                 m[1] += X.w(i) * Y.dc(j) * (H - (p_(i, j) - p_(i, j - 1)) / Y.dc(j));
             }

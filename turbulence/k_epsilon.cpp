@@ -340,9 +340,8 @@ void KEpsilon::set_hole_corners(const SolidCells& holes) {
         e.corner(i, j) = 0.5 * (WallFunction(ka, y, nu).nu_wall + WallFunction(kb, y, nu).nu_wall);
     };
     // A block across a whole periodic direction has no ends there: every corner of its side is a wall corner.
-    auto spans = [](const Axis& a, int lo, int hi) { return a.periodic() && lo <= 0 && hi >= a.cells(); };
     for (const SolidBlock& h : holes.blocks()) {
-        const int end_x = spans(X, h.lower[0], h.upper[0]) ? 0 : 1, end_y = spans(Y, h.lower[1], h.upper[1]) ? 0 : 1;
+        const int end_x = holes.spans_periodic(h, 0) ? 0 : 1, end_y = holes.spans_periodic(h, 1) ? 0 : 1;
         for (const bool top : {false, true}) {  // corners on the bottom and top sides, fluid row below / above
             const int gj = top ? h.upper[1] : h.lower[1], row = top ? h.upper[1] : h.lower[1] - 1;
             const double y = 0.5 * Y.width(row);

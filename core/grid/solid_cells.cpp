@@ -27,20 +27,22 @@ void SolidCells::fill(Velocity& vel) const {
     for (const SolidBlock& b : blocks_) fill_block(b, vel);
 }
 
+bool SolidCells::spans_periodic(const SolidBlock& b, int axis) const {
+    const Axis& a = axis == 0 ? grid_.x_axis() : grid_.y_axis();
+    return a.periodic() && b.lower[axis] <= 0 && b.upper[axis] >= a.cells();
+}
+
 void SolidCells::fill_block(const SolidBlock& b, Velocity& vel) const {
     const int ox = grid_.lx().offset, oy = grid_.ly().offset;
     const int i_lo = -kGhost, i_hi = grid_.nx() + kGhost, j_lo = -kGhost, j_hi = grid_.ny() + kGhost;
     const Axis& X = grid_.x_axis();
     const Axis& Y = grid_.y_axis();
-    // A block across the whole of a periodic direction has no sides in it (a bed or a lid).
-    const bool sides_x = !(X.periodic() && b.lower[0] <= 0 && b.upper[0] >= X.cells());
-    const bool sides_y = !(Y.periodic() && b.lower[1] <= 0 && b.upper[1] >= Y.cells());
+    const bool sides_x = !spans_periodic(b, 0), sides_y = !spans_periodic(b, 1);
     constexpr int far = 1 << 20;
 
-    // One component c on the faces of the block: `normal_*` are the lines of the sides c is normal to (its
-    // faces lie on them), `tangential_*` the lines of the sides it is tangential to (its faces lie on the
-    // centres between them). k_n counts the component's lines from the block's low normal side, k_t the centres
-    // from the low tangential side.
+    // One component c on the faces of the block: n_lo, n_hi are the lines of the sides c is normal to (its faces
+    // lie on them), t_lo, t_hi those of the sides it is tangential to (its faces lie on the centres between).
+    // gn counts c's lines along the normal axis, gt the centres along the other (global indices).
     auto fill_component = [&](Field2D& c, double U, bool normal_is_x, bool has_normal_sides,
                               bool has_tangential_sides) {
         const Axis& T = normal_is_x ? Y : X;
@@ -61,9 +63,9 @@ void SolidCells::fill_block(const SolidBlock& b, Velocity& vel) const {
                     if (il < i_lo || il >= i_hi || jl < j_lo || jl >= j_hi) return nullptr;
                     return &c(il, jl);
                 };
-                double value = U;
+                double value = U;  // deep inside: the block's velocity
                 if (dn == 0) {
-                    value = U;  // the side moves with the block
+                    value = U;  // the side moves with the block (whatever the tangential depth)
                 } else if (dn <= kGhost && dn < dt) {
                     // Normal component beyond a side: odd mirror about the side's value, as a domain wall's ghost.
                     const int gm = gn - n_lo <= n_hi - gn ? n_lo - dn : n_hi + dn;

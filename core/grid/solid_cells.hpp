@@ -6,6 +6,8 @@
 // operator reads them, as BoundaryConditions fills the ghosts of the domain's walls:
 //
 //   a face on a side, normal to it            u_n = U_n (the wall moves with the block)
+//   the two layers of normal faces inside     u_n = 2 U_n - u_n,fluid (odd mirror about the side's value,
+//   a side                                    as a domain wall's ghost)
 //   the two layers of tangential faces        u_t = U_t - (u_t,fluid - U_t) d_in / d_out, the fluid face
 //   inside a side                             mirrored across the side line: the diffusion stencil of the
 //                                             first fluid face sees u_t = U_t on the side (no slip), the
@@ -44,6 +46,9 @@ public:
 
     // The faces of every block on this patch, ghosts included (call after the halo exchange).
     void fill(Velocity& vel) const;
+    // Whether block b spans the whole of `axis` (0: x, 1: y) and that axis is periodic: it has no sides along it
+    // (a bed or a lid).
+    bool spans_periodic(const SolidBlock& b, int axis) const;
 
 private:
     void fill_block(const SolidBlock& b, Velocity& vel) const;
