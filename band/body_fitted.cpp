@@ -15,10 +15,10 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
         const Body& body = bodies_[k];
         const MotionConfig& m = body.config().motion;
         const std::string key = "bodies." + body.name() + ".motion";
-        if (body.free())
+        if (body.free() && !m.locked[2])
             throw std::invalid_argument(key +
-                                        ".type: a free body_fitted body is not carried yet (prescribed motion "
-                                        "only in this version)");
+                                        ".lock_rotation: a free body_fitted body must have its rotation locked (its "
+                                        "sides stay on grid lines)");
         if (m.angular_velocity != 0.0 || m.angular_amplitude != 0.0 || m.angular_acceleration != 0.0)
             throw std::invalid_argument(key + ": a body_fitted body translates only (its sides stay on grid lines)");
         if (body.moves()) {
@@ -26,6 +26,7 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
                 throw std::invalid_argument(key + ".type: one body_fitted body moves, and the grid with it; bodies." +
                                             bodies_[carrying_].name() + " already does");
             carrying_ = static_cast<int>(k);
+            refuse_walls_across_motion(body);
         }
         blocks.push_back(hole_of(body, grid_));
         const SolidBlock& b = blocks.back();
@@ -47,34 +48,83 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
     solid_.set(std::move(blocks));
 }
 
+// The grid moves with the body along the axes it moves along (a free body's unlocked ones, a prescribed body's
+// with a velocity, amplitude or acceleration there): the boundaries across them would move too.
+void BodyFitted::refuse_walls_across_motion(const Body& body) const {
+    const MotionConfig& m = body.config().motion;
+    static const char* const side_names[4] = {"left", "right", "bottom", "top"};
+    for (int axis = 0; axis < 2; ++axis) {
+        const bool moves = body.free()
+                               ? !m.locked[axis]
+                               : m.velocity[axis] != 0.0 || m.amplitude[axis] != 0.0 || m.acceleration[axis] != 0.0;
+        if (!moves) continue;
+        for (int s = 2 * axis; s < 2 * axis + 2; ++s) {
+            const BoundaryType type = settings_.boundaries[s];
+            if (type != BoundaryType::wall && type != BoundaryType::slip) continue;
+            throw std::invalid_argument(std::string("boundaries.") + side_names[s] +
+                                        ".type: a wall across the motion of the body_fitted body `" + body.name() +
+                                        "`, which carries the grid (and its boundaries) along " +
+                                        (axis == 0 ? "x" : "y") +
+                                        ": use inflow (water at rest) ahead and outflow behind" +
+                                        (body.free() ? std::string(", or lock ") + (axis == 0 ? "x" : "y") : ""));
+        }
+    }
+}
+
 void BodyFitted::attach(FlowSolver& flow) {
     flow_ = &flow;
     follow();
+    if (carrying_ < 0 || !bodies_[carrying_].free()) return;
+    response_ = flow_->hole_response(static_cast<std::size_t>(carrying_));
+    const SolidBlock& block = solid_.blocks()[carrying_];
+    const double rd = settings_.density * settings_.depth;
+    for (int k = 0; k < 2; ++k) {
+        const std::array<double, 2> push = flow_->solid_gradient_sum(block, response_->pressure[k]);
+        added_mass_(0, k) = rd * push[0];
+        added_mass_(1, k) = rd * push[1];
+    }
 }
 
 void BodyFitted::follow() {
     if (carrying_ < 0) return;
-    const Vec2 v = bodies_[carrying_].state().velocity;
-    flow_->set_frame_velocity({v.x(), v.y()});
-    solid_.set_velocity(static_cast<std::size_t>(carrying_), {v.x(), v.y()});
+    const BodyState& s = bodies_[carrying_].state();
+    // Where the block's cells are now: the grid moves by what separates them from the body.
+    const SolidBlock& block = solid_.blocks()[carrying_];
+    const Axis& X = grid_.x_axis();
+    const Axis& Y = grid_.y_axis();
+    const Vec2 on_grid(0.5 * (X.line(block.lower[0]) + X.line(block.upper[0])),
+                       0.5 * (Y.line(block.lower[1]) + Y.line(block.upper[1])));
+    const Vec2 shift = s.centre - on_grid;
+    if (shift.x() != 0.0 || shift.y() != 0.0) flow_->translate_grid(shift.x(), shift.y());
+    flow_->set_frame_velocity({s.velocity.x(), s.velocity.y()});
+    solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
 }
 
 void BodyFitted::place(double t) {
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        Body& body = bodies_[k];
-        const Vec2 before = body.state().centre;
-        body.move_to(t);
-        if (static_cast<int>(k) != carrying_) continue;
-        const Vec2 shift = body.state().centre - before;
-        flow_->translate_grid(shift.x(), shift.y());
-    }
+    for (Body& body : bodies_) body.move_to(t);  // a free body is where FreeBodies::predict put it
     follow();
 }
 
 Wrench BodyFitted::hydrodynamic_wrench(std::size_t b, const Velocity&, double) {
-    // Only free bodies are moved by a wrench, and the constructor refuses them.
-    throw std::logic_error("BodyFitted::hydrodynamic_wrench: body " + bodies_[b].name() +
-                           " is not free (free body_fitted bodies come with the moving grid)");
+    if (static_cast<int>(b) != carrying_ || !response_)
+        throw std::logic_error("BodyFitted::hydrodynamic_wrench: body " + bodies_[b].name() + " is not free");
+    // Force (a), which closes the fluid's momentum balance; the rotation is locked.
+    const std::array<double, 2> m = flow_->solid_momentum_rate(solid_.blocks()[b]);
+    return {settings_.density * settings_.depth * Vec2(m[0], m[1]), 0.0};
+}
+
+std::optional<Eigen::Matrix2d> BodyFitted::added_mass(std::size_t b) const {
+    if (static_cast<int>(b) != carrying_ || !response_) return std::nullopt;
+    return added_mass_;
+}
+
+void BodyFitted::body_moved(std::size_t b, double dt) {
+    if (static_cast<int>(b) != carrying_ || !response_) return;
+    // The step was projected with the sides at the predicted velocity (place -> follow); the update moved it.
+    const std::array<double, 2> imposed = solid_.blocks()[b].velocity;
+    const Vec2 v = bodies_[b].state().velocity;
+    follow();
+    flow_->add_hole_response(*response_, {v.x() - imposed[0], v.y() - imposed[1]}, dt);
 }
 
 std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) {

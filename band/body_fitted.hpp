@@ -9,12 +9,22 @@
 // They differ by the staggered grid's half cell beside each side: the normal-momentum cells end half a cell
 // from the side, where (a) takes the convective and normal viscous fluxes and (b) the wall's zero.
 //
-// A body with prescribed translation carries the whole grid with it (ALE: the grid translates rigidly at the
-// body's velocity, the convective fluxes are relative to it, and the domain's boundaries keep the conditions of
-// the inertial frame: water at rest ahead of the block, an outflow behind), as the study's body-fitted
-// OpenFOAM runs of a fall do. This version takes one moving body, prescribed (not free), without rotation; the
-// rest is refused with an error naming the key. With k-epsilon the cells along the sides are the wall-adjacent
-// cells of the log law (sample_walls), as a body-fitted mesh's first cells are.
+// A body that moves carries the whole grid with it (ALE: the grid translates rigidly at the body's velocity,
+// the convective fluxes are relative to it, and the domain's boundaries keep the conditions of the inertial
+// frame: water at rest ahead of the block, an outflow behind), as the study's body-fitted OpenFOAM runs of a fall
+// do. So the boundaries across an axis the body moves along cannot be walls (they would move with it); the
+// constructor refuses them, naming the key. One body moves, and only translates.
+//
+// A free body is coupled strongly, without passes and without a relaxation parameter. Within a step the flow is
+// linear in the body's velocity at its end, which enters the projection only through the sides' normal faces
+// (FlowSolver::hole_response): the body's added mass over the step is the force of that response, and the
+// update (m + M) a = F(a*) + W + M a* (rigidbody/free_bodies.cpp) is the converged coupled solution. body_moved()
+// then adds the response to the flow for the body's final velocity and puts the grid at its final place. The
+// response depends on the spacings alone (the grid only translates): two Poisson solves at the start.
+// With k-epsilon the cells along the sides are the wall-adjacent cells of the log law (sample_walls), as a
+// body-fitted mesh's first cells are.
+#include <array>
+#include <optional>
 #include <vector>
 
 #include "carrier.hpp"
@@ -24,6 +34,7 @@ namespace chute {
 
 struct BodyFittedSettings {
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
+    std::array<BoundaryType, 4> boundaries{};                // left, right, bottom, top
 };
 
 class BodyFitted final : public Carrier {
@@ -39,6 +50,8 @@ public:
     // The hole's faces are filled by the flow solver, whenever it fills the domain's boundaries.
     void impose(Velocity&, double) override {}
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
+    std::optional<Eigen::Matrix2d> added_mass(std::size_t b) const override;
+    void body_moved(std::size_t b, double dt) override;
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
 
     void locate_walls() override {}
@@ -56,8 +69,13 @@ private:
     std::vector<double> cell_size_;
     FlowSolver* flow_ = nullptr;
     int carrying_ = -1;  // the body the grid moves with (-1: none)
-    // The grid follows body `carrying_`: its velocity is the frame's and its block's.
+    // A free carrying body: the flow's response to its velocity, and its added mass from it (kg).
+    std::optional<FlowSolver::HoleResponse> response_;
+    Eigen::Matrix2d added_mass_ = Eigen::Matrix2d::Zero();
+    // The grid follows body `carrying_`: its velocity is the frame's and its block's, and its block sits where the
+    // body is.
     void follow();
+    void refuse_walls_across_motion(const Body& body) const;
 };
 
 }  // namespace chute

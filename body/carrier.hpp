@@ -8,6 +8,8 @@
 //   impose(u*, dt)                        the bodies on the predicted velocity (forcing, or boundary values)
 //   (pressure projection)
 //   hydrodynamic_wrench(b, u^{n+1}, dt)   on free body b, at its predicted place: what moves it
+//   [body_moved(b, dt)]                   after the free body's update, where the carrier answers to its motion
+//                                         exactly (added_mass): the flow brought to the body's final motion
 //   [impose(u^{n+1}, dt), (projection), hydrodynamic_wrench(...)]   again, in a strongly coupled step
 //                                         (rigidbody/free_bodies.hpp): the momentum imposed on the flow is
 //                                         summed over the step's passes, from zero at begin_step
@@ -18,6 +20,7 @@
 // that cuts its bodies out of the grid hands the flow solver the cells it took: solid_cells().
 // Free-body dynamics, turbulence, outputs and summaries hold a Carrier&, never a concrete carrier.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +63,14 @@ public:
     virtual void place(double t) = 0;
     virtual void impose(Velocity& predicted, double dt) = 0;
     virtual Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) = 0;
+    // Strong coupling without passes: a carrier whose wrench is linear in free body b's velocity at the end of
+    // the step gives the slope as the body's added mass M over the step (kg, x and y: the force changes by
+    // -M da when the body's acceleration over the step changes by da), and after the body's update
+    // body_moved(b, dt) moves the flow and the grid to the body's final motion, so that the update solved with M
+    // is the converged one (rigidbody/free_bodies.hpp). Null: the carrier does not (the immersed boundary, whose
+    // free bodies take a virtual mass and passes instead).
+    virtual std::optional<Eigen::Matrix2d> added_mass(std::size_t) const { return std::nullopt; }
+    virtual void body_moved(std::size_t, double) {}
     // p is the kinematic pressure (p / rho) the flow solver holds.
     virtual std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p,
                                             const WallTurbulence* turbulence) = 0;

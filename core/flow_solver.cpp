@@ -86,7 +86,7 @@ void FlowSolver::project_start() {
     fill_boundaries(vel_);
     divergence(*grid_, vel_, 1.0, source_);
     phi_.fill(0.0);
-    poisson_->solve(source_, phi_, poisson_residual_floor(1.0));
+    poisson_->solve(source_, phi_, poisson_residual_floor(vel_, 1.0));
     halo_->exchange(phi_);
     bc_->apply_pressure(phi_);
     subtract_pressure_gradient(*grid_, *bc_, phi_, 1.0, vel_);
@@ -95,30 +95,92 @@ void FlowSolver::project_start() {
     fill_boundaries(vel_);
 }
 
+namespace {
+
+// Visit the owned faces of a solid block: u faces on lines lower[0]..upper[0] across its rows, v faces on lines
+// lower[1]..upper[1] across its columns. on_u(i, j) and on_v(i, j) take local indices.
+template <class OnU, class OnV>
+void for_each_block_face(const Grid& grid, const SolidBlock& b, OnU&& on_u, OnV&& on_v) {
+    const int ox = grid.lx().offset, oy = grid.ly().offset;
+    const int i0 = std::max(b.lower[0] - ox, 0), j0 = std::max(b.lower[1] - oy, 0);
+    const int i1 = std::min(b.upper[0] - ox, grid.nx() - 1), j1 = std::min(b.upper[1] - oy, grid.ny() - 1);
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            if (j + oy < b.upper[1]) on_u(i, j);
+            if (i + ox < b.upper[0]) on_v(i, j);
+        }
+}
+
+}  // namespace
+
 std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const {
     // After the step, rhs_old_ holds H^n and rhs_ H^{n-1} (project() swapped them).
     const auto& X = grid_->lx();
     const auto& Y = grid_->ly();
-    const int ox = X.offset, oy = Y.offset;
     double m[2] = {0.0, 0.0};
-    // The owned faces of the block only: u faces on lines lower[0]..upper[0] across its rows, v faces on lines
-    // lower[1]..upper[1] across its columns.
-    const int i0 = std::max(b.lower[0] - ox, 0), j0 = std::max(b.lower[1] - oy, 0);
-    const int i1 = std::min(b.upper[0] - ox, grid_->nx() - 1), j1 = std::min(b.upper[1] - oy, grid_->ny() - 1);
-    for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-            const bool u_face = j + oy < b.upper[1], v_face = i + ox < b.upper[0];
-            if (u_face) {
-                const double H = weight_new_ * rhs_old_.u(i, j) + weight_old_ * rhs_.u(i, j);
-                m[0] += X.dc(i) * Y.w(j) * (H - (p_(i, j) - p_(i - 1, j)) / X.dc(i));
-            }
-            if (v_face) {
-                const double H = weight_new_ * rhs_old_.v(i, j) + weight_old_ * rhs_.v(i, j);
-                m[1] += X.w(i) * Y.dc(j) * (H - (p_(i, j) - p_(i, j - 1)) / Y.dc(j));
-            }
-        }
+    for_each_block_face(
+        *grid_, b,
+        [&](int i, int j) {
+            const double H = weight_new_ * rhs_old_.u(i, j) + weight_old_ * rhs_.u(i, j);
+            m[0] += X.dc(i) * Y.w(j) * (H - (p_(i, j) - p_(i - 1, j)) / X.dc(i));
+        },
+        [&](int i, int j) {
+            const double H = weight_new_ * rhs_old_.v(i, j) + weight_old_ * rhs_.v(i, j);
+            m[1] += X.w(i) * Y.dc(j) * (H - (p_(i, j) - p_(i, j - 1)) / Y.dc(j));
+        });
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_SUM, grid_->comm());
     return {m[0], m[1]};
+}
+
+std::array<double, 2> FlowSolver::solid_gradient_sum(const SolidBlock& b, const Field2D& q) const {
+    const auto& X = grid_->lx();
+    const auto& Y = grid_->ly();
+    double m[2] = {0.0, 0.0};
+    for_each_block_face(
+        *grid_, b, [&](int i, int j) { m[0] += Y.w(j) * (q(i, j) - q(i - 1, j)); },
+        [&](int i, int j) { m[1] += X.w(i) * (q(i, j) - q(i, j - 1)); });
+    MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_SUM, grid_->comm());
+    return {m[0], m[1]};
+}
+
+FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block) {
+    if (!solid_ || block >= solid_->blocks().size())
+        throw std::logic_error("FlowSolver::hole_response: no solid block " + std::to_string(block));
+    HoleResponse r;
+    for (int k = 0; k < 2; ++k) {
+        // The sides of `block` moving at e_k, everything else at rest: the source the projection sees.
+        SolidCells unit = *solid_;
+        for (std::size_t b = 0; b < unit.blocks().size(); ++b) unit.set_velocity(b, {0.0, 0.0});
+        unit.set_velocity(block, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0});
+        Velocity d(*grid_);
+        unit.fill(d);
+        divergence(*grid_, d, 1.0, source_);
+        Field2D phi(*grid_);
+        poisson_->solve(source_, phi, poisson_residual_floor(d, 1.0));
+        halo_->exchange(phi);
+        bc_->apply_pressure(phi);
+        Velocity v(*grid_);
+        subtract_pressure_gradient(*grid_, *bc_, phi, 1.0, v);
+        halo_->exchange(v);
+        r.velocity[k] = std::move(v);
+        r.pressure[k] = std::move(phi);
+    }
+    return r;
+}
+
+void FlowSolver::add_hole_response(const HoleResponse& r, std::array<double, 2> change, double dt) {
+    for (int j = -kGhost; j < grid_->ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid_->nx() + kGhost; ++i) {
+            for (int k = 0; k < 2; ++k) {
+                vel_.u(i, j) += change[k] * r.velocity[k].u(i, j);
+                vel_.v(i, j) += change[k] * r.velocity[k].v(i, j);
+                p_(i, j) += change[k] * r.pressure[k](i, j) / dt;
+            }
+        }
+    halo_->exchange(vel_);
+    fill_boundaries(vel_);
+    halo_->exchange(p_);
+    bc_->apply_pressure(p_);
 }
 
 void FlowSolver::refresh_ghosts() {
@@ -150,6 +212,20 @@ void FlowSolver::set_frame_velocity(std::array<double, 2> w) {
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
+    // The same spacings to round-off (a grid that translated, as a restart of a body-fitted run finds it): the
+    // lines move, the matrix stays the one the run was solving with, so that the restart continues bit for bit.
+    auto same_spacings = [](const Axis& a, const std::vector<double>& lines) {
+        if (lines.size() != a.lines().size()) return false;
+        for (std::size_t k = 0; k + 1 < lines.size(); ++k)
+            if (std::abs((lines[k + 1] - lines[k]) - a.width(static_cast<int>(k))) >
+                1e-12 * a.width(static_cast<int>(k)))
+                return false;
+        return true;
+    };
+    if (same_spacings(grid_->x_axis(), x_lines) && same_spacings(grid_->y_axis(), y_lines)) {
+        grid_->set_lines(std::move(x_lines), std::move(y_lines));
+        return;
+    }
     grid_->set_lines(std::move(x_lines), std::move(y_lines));
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     poisson_->update_matrix();
@@ -227,13 +303,13 @@ void FlowSolver::pressure_increment_guess(double r) {
 // The round-off level of the Poisson right-hand side V div(u*)/dt: div(u*) sums face velocities of size
 // |u| / h, so its rounding error is ~eps |u| / h per cell. Asking for a smaller residual would never stop
 // when the flow is (nearly) at rest; 1e-14 is ~50 eps.
-double FlowSolver::poisson_residual_floor(double dt) const {
+double FlowSolver::poisson_residual_floor(const Velocity& vel, double dt) const {
     const auto& X = grid_->lx();
     const auto& Y = grid_->ly();
     double sum = 0.0;
     for (int j = 0; j < grid_->ny(); ++j)
         for (int i = 0; i < grid_->nx(); ++i) {
-            const double b = std::abs(star_.u(i, j)) * Y.w(j) + std::abs(star_.v(i, j)) * X.w(i);  // V |u|/h
+            const double b = std::abs(vel.u(i, j)) * Y.w(j) + std::abs(vel.v(i, j)) * X.w(i);  // V |u|/h
             sum += b * b;
         }
     MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, grid_->comm());
@@ -315,7 +391,7 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
         halo_->exchange(star_);
         if (solid_) solid_->fill(star_);  // the sides' normal velocity: the hole's Neumann condition
         divergence(*grid_, star_, 1.0 / dt, source_);
-        const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(dt));
+        const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(star_, dt));
         stats.poisson_iterations = ps.iterations;
         stats.poisson_residual = ps.relative_residual;
     }

@@ -110,13 +110,31 @@ public:
     // fluxes inside the block cancel and what is left is what crossed its sides: the fluid's momentum balance
     // closes exactly. Explicit diffusion only (a body-fitted run refuses the implicit one). Collective.
     std::array<double, 2> solid_momentum_rate(const SolidBlock& block) const;
+    // The flow's answer to a solid block's velocity U within a step (the strong coupling of a free body-fitted
+    // body, band/body_fitted.hpp). The projection is linear in U, which enters only through the sides' normal
+    // faces: changing U by dU after the step changes u^{n+1} by sum_k dU_k velocity[k] and p^{n+1/2} by
+    // sum_k dU_k pressure[k] / dt, where pressure[k] = phi_k with laplacian(phi_k) = div(e_k on the sides) and
+    // velocity[k] = -grad phi_k on the fluid faces (k = x, y). It depends on the grid's spacings alone, so one
+    // computation serves a rigidly translating grid for the whole run. Collective: two Poisson solves.
+    struct HoleResponse {
+        std::array<Velocity, 2> velocity;
+        std::array<Field2D, 2> pressure;
+    };
+    HoleResponse hole_response(std::size_t block);
+    // The step's u^{n+1} and p^{n+1/2} changed by the response to dU = `change`, the solid cells already holding
+    // the block's new velocity (their faces are filled from it). Collective.
+    void add_hole_response(const HoleResponse& response, std::array<double, 2> change, double dt);
+    // The sum over a solid block's faces of V grad(q) (m^3 times q's unit per metre): the pressure part of
+    // solid_momentum_rate for a field q. Collective.
+    std::array<double, 2> solid_gradient_sum(const SolidBlock& block, const Field2D& q) const;
     // A grid that translates rigidly (a body-fitted block carrying it): shift every line by (dx, dy) and take w
     // as the grid's velocity, which the convective fluxes and the step's limit see relative to it
     // (core/operators/convection.hpp). Spacings do not change, so neither does the Poisson matrix.
     void translate_grid(double dx, double dy);
     void set_frame_velocity(std::array<double, 2> w);
     std::array<double, 2> frame_velocity() const { return frame_; }
-    // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt.
+    // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt (the matrix is kept when the
+    // spacings are the same to round-off: a translated grid).
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     void refresh_ghosts();
     // Time the stages of a step into `timer` (null: no timing): "momentum" (prediction with its boundary
@@ -124,15 +142,15 @@ public:
     void set_timer(StageTimer* timer) { timer_ = timer; }
 
 private:
-    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;  // H = -C(u) + nu L(u)
-    double diffusion_limit() const;                               // explicit limit with nu + max nu_t
-    bool implicit_step(double dt) const;                          // the scheme of a step of size dt
-    void predict_velocity(double dt, double r);                   // u* from u^n, H^n, H^{n-1}, f, p
-    void pressure_increment_guess(double r);                      // phi <- r (p^n - p^{n-1})
-    double poisson_residual_floor(double dt) const;               // absolute tolerance of the solve
-    void solve_and_correct(StepStats& stats);                     // star_ projected, p_ += phi_
-    void publish_velocity();                                      // vel_ <- star_, halos and boundaries
-    void fill_boundaries(Velocity& vel) const;                    // domain boundaries, then solid cells
+    void explicit_rhs(const Velocity& vel, Velocity& rhs) const;          // H = -C(u) + nu L(u)
+    double diffusion_limit() const;                                       // explicit limit with nu + max nu_t
+    bool implicit_step(double dt) const;                                  // the scheme of a step of size dt
+    void predict_velocity(double dt, double r);                           // u* from u^n, H^n, H^{n-1}, f, p
+    void pressure_increment_guess(double r);                              // phi <- r (p^n - p^{n-1})
+    double poisson_residual_floor(const Velocity& vel, double dt) const;  // absolute tolerance of the solve
+    void solve_and_correct(StepStats& stats);                             // star_ projected, p_ += phi_
+    void publish_velocity();                                              // vel_ <- star_, halos and boundaries
+    void fill_boundaries(Velocity& vel) const;                            // domain boundaries, then solid cells
 
     FlowConfig config_;
     std::unique_ptr<Grid> grid_;

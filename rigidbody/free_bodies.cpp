@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Dense>
+
 namespace chute {
 
 FreeBodies::FreeBodies(const FreeBodySettings& settings, std::vector<Body>& bodies, Carrier& carrier)
@@ -100,6 +102,10 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
+        const std::optional<Eigen::Matrix2d> exact = carrier_.added_mass(f.index);
+        if (exact && f.impact)
+            throw std::logic_error("FreeBodies::correct: an impact of body `" + body.name() +
+                                   "`, whose carrier couples it exactly, which has no impact law yet");
         BodyLoads& out = loads_[f.index];
         const BodyLoads last_pass = out;
         out = BodyLoads{};
@@ -124,6 +130,22 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
             change = ((out.water_impulse - last_pass.water_impulse).norm() +
                       std::abs(out.water_angular_impulse - last_pass.water_angular_impulse) / reach) /
                      scale;
+        } else if (exact) {
+            // F(a) = F(a*) - M (a - a*) exactly, so m a = F(a) + W is (m + M) a = F(a*) + W + M a*, solved on the
+            // free translations (a locked one stays 0); the carrier then brings the flow to it (body_moved).
+            const Vec2 rhs = hydrodynamic.force + out.gravity + out.buoyancy + *exact * f.held_acceleration;
+            Eigen::Matrix2d A = f.inertia.mass * Eigen::Matrix2d::Identity() + *exact;
+            Vec2 b = rhs;
+            for (int k = 0; k < 2; ++k)
+                if (free_translation[k] == 0.0) {
+                    A.row(k).setZero();
+                    A(k, k) = 1.0;
+                    b[k] = 0.0;
+                }
+            s.acceleration = A.partialPivLu().solve(b);
+            s.angular_acceleration = 0.0;  // the carrier takes bodies with their rotation locked only
+            f.acceleration = s.acceleration;
+            f.angular_acceleration = 0.0;
         } else {
             const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
             s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);
@@ -187,6 +209,7 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         coupling_change_ = std::max(coupling_change_, change);
         events_.insert(events_.end(), ev.begin(), ev.end());
         body.set_state(s);
+        if (exact) carrier_.body_moved(f.index, dt);
     }
 }
 

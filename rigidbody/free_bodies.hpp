@@ -11,6 +11,10 @@
 //                   Kempe & Froehlich 2015, JCP 281:591), which keeps light bodies stable:
 //                     (m + C_V m_f) a = F_h + (m - m_f) g + C_V m_f a*,   a* the predicted acceleration,
 //                   and the motion over the step with a held, impacts located inside it (contact/).
+//                   A carrier that gives the body's added mass over the step exactly (Carrier::added_mass: the
+//                   body-fitted one) takes it in place of C_V m_f, (m + M) a = F_h + (m - m_f) g + M a*, which
+//                   is then the coupled solution itself: the carrier moves the flow to it (body_moved), and the
+//                   step needs no further pass and no relaxation at any density ratio.
 //   another_pass()  strong coupling: the step forces and projects again while the update still moves
 //                   (numerics.coupling), and correct() runs again from the same start.
 // An impact (impulse or lumped law) reverses the body's velocity at one instant, and the water moving with it

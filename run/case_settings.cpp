@@ -6,7 +6,12 @@ ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
     return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
 }
 
-BodyFittedSettings body_fitted_settings(const CaseConfig& c) { return {c.density, c.viscosity, c.depth}; }
+BodyFittedSettings body_fitted_settings(const CaseConfig& c) {
+    return {c.density,
+            c.viscosity,
+            c.depth,
+            {c.boundary[0].type, c.boundary[1].type, c.boundary[2].type, c.boundary[3].type}};
+}
 
 FreeBodySettings free_body_settings(const CaseConfig& c) {
     return {c.contact,  Vec2(c.gravity[0], c.gravity[1]),    c.density, c.depth, c.ibm.virtual_mass,

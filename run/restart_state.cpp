@@ -67,6 +67,7 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
     model.free_bodies().restore(checkpoint);
     model.carrier().place(solver.time());
+    solver.refresh_ghosts();  // a hole's faces move with its restored body
     if (KEpsilon* turbulence = model.turbulence()) turbulence->restored();
 }
 

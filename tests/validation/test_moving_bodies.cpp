@@ -39,6 +39,13 @@ AddedMass accelerated_square(Vec2 direction, CarrierKind carrier = CarrierKind::
         a->ratio = 1.04;
     }
     for (auto& b : c.boundary) b.type = BoundaryType::slip;
+    if (carrier == CarrierKind::body_fitted) {
+        // The grid (and its boundaries) moves with the square along x: water at rest enters ahead, leaves behind.
+        c.boundary[static_cast<int>(Side::right)].type = BoundaryType::inflow;
+        c.boundary[static_cast<int>(Side::right)].velocity = {0.0, 0.0};
+        c.boundary[static_cast<int>(Side::left)].type = BoundaryType::outflow;
+        c.boundary[static_cast<int>(Side::left)].outflow = OutflowKind::convective;
+    }
     c.density = 1000.0;
     c.viscosity = 1e-6;
     c.fixed_dt = 0.002;
