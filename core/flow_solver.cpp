@@ -73,6 +73,7 @@ void FlowSolver::fill_boundaries(Velocity& vel) const {
 
 void FlowSolver::set_solid_cells(const SolidCells* solid) {
     solid_ = solid;
+    if (implicit_) implicit_->set_solid_cells(solid_);
     poisson_->set_fluid_cells(fluid_cells(), solid_ ? solid_->fluid_cell_count() : grid_->global_cells());
     refresh_ghosts();
     if (step_ == 0 && fluid_cells()) project_start();
@@ -113,6 +114,28 @@ void for_each_block_face(const Grid& grid, const SolidBlock& b, OnU&& on_u, OnV&
 
 }  // namespace
 
+// With implicit diffusion the viscous flux across a hole's sides is not in H: it is taken here, from u* as the
+// implicit solve left it (its hole faces filled as the solve's rows assumed), for solid_momentum_rate.
+void FlowSolver::implicit_wall_momentum(Velocity& star) {
+    implicit_wall_.assign(solid_ ? solid_->blocks().size() : 0, {0.0, 0.0});
+    if (!fluid_cells()) return;
+    halo_->exchange(star);
+    fill_boundaries(star);
+    for (std::size_t k = 0; k < implicit_wall_.size(); ++k) {
+        const auto& X = grid_->lx();
+        const auto& Y = grid_->ly();
+        std::array<double, 2>& m = implicit_wall_[k];
+        for_each_block_face(
+            *grid_, solid_->blocks()[k],
+            [&](int i, int j) {
+                m[0] += X.dc(i) * Y.w(j) * implicit_rate_u(*grid_, config_.viscosity, eddy_, star, i, j);
+            },
+            [&](int i, int j) {
+                m[1] += X.w(i) * Y.dc(j) * implicit_rate_v(*grid_, config_.viscosity, eddy_, star, i, j);
+            });
+    }
+}
+
 std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const {
     // After the step, rhs_old_ holds H^n and rhs_ H^{n-1} (project() swapped them).
     const auto& X = grid_->lx();
@@ -128,6 +151,14 @@ std::array<double, 2> FlowSolver::solid_momentum_rate(const SolidBlock& b) const
             const double H = weight_new_ * rhs_old_.v(i, j) + weight_old_ * rhs_.v(i, j);
             m[1] += X.w(i) * Y.dc(j) * (H - (p_(i, j) - p_(i, j - 1)) / Y.dc(j));
         });
+    // The implicit diffusion's flux (this rank's faces; the sum below adds the ranks').
+    if (implicit_now_ && solid_)
+        for (std::size_t k = 0; k < implicit_wall_.size(); ++k) {
+            const SolidBlock& h = solid_->blocks()[k];
+            if (h.lower != b.lower || h.upper != b.upper) continue;
+            m[0] += implicit_wall_[k][0];
+            m[1] += implicit_wall_[k][1];
+        }
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_SUM, grid_->comm());
     return {m[0], m[1]};
 }
@@ -235,7 +266,7 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
     const bool cfl_only = config_.diffusion == DiffusionScheme::implicit_euler ||
-                          (config_.diffusion == DiffusionScheme::automatic && eddy_on_ && !fluid_cells());
+                          (config_.diffusion == DiffusionScheme::automatic && eddy_on_);
     const double nu = cfl_only ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
     const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number, frame_);
     return std::min(limits.stable(), config_.max_dt);
@@ -258,9 +289,7 @@ bool FlowSolver::implicit_step(double dt) const {
         case DiffusionScheme::automatic:
             break;
     }
-    // The implicit solve does not know a hole's walls yet: with solid cells `auto` stays explicit (and the step
-    // keeps to the diffusion limit, next_dt()).
-    if (!eddy_on_ || fluid_cells()) return false;
+    if (!eddy_on_) return false;
     return dt > (implicit_now_ ? 2.0 / 3.0 : 1.0) * diffusion_limit();
 }
 
@@ -338,14 +367,15 @@ double FlowSolver::predict(double dt) {
     predict_velocity(dt, r);
     bc_->set_outflow(vel_, star_, dt);
     if (implicit_now_) {
-        if (fluid_cells())
-            throw std::invalid_argument(
-                "numerics.diffusion: implicit is not available with a body_fitted body yet (use explicit or auto)");
-        if (!implicit_) implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
+        if (!implicit_) {
+            implicit_ = std::make_unique<ImplicitDiffusion>(*grid_, *bc_);
+            implicit_->set_solid_cells(solid_);
+        }
         halo_->exchange(star_);
-        bc_->apply(star_);
+        fill_boundaries(star_);
         pending_.diffusion_iterations = implicit_->apply(config_.viscosity, eddy_, dt, star_);
         bc_->set_outflow(vel_, star_, dt);  // a zero-stress outflow face copies the corrected interior
+        implicit_wall_momentum(star_);
     }
     pressure_increment_guess(r);
     return dt;

@@ -20,6 +20,7 @@
 // The first step (and the first after a change of scheme) is forward Euler.
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "boundary_conditions.hpp"
 #include "field.hpp"
@@ -151,6 +152,7 @@ private:
     void solve_and_correct(StepStats& stats);                             // star_ projected, p_ += phi_
     void publish_velocity();                                              // vel_ <- star_, halos and boundaries
     void fill_boundaries(Velocity& vel) const;                            // domain boundaries, then solid cells
+    void implicit_wall_momentum(Velocity& star);                          // implicit_wall_ from u*
 
     FlowConfig config_;
     std::unique_ptr<Grid> grid_;
@@ -170,8 +172,9 @@ private:
     long step_ = 0;
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
-    double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
-    std::array<double, 2> frame_{};               // the grid's velocity (translate_grid)
+    double weight_new_ = 1.0, weight_old_ = 0.0;        // the last step's AB2 weights of H^n and H^{n-1}
+    std::array<double, 2> frame_{};                     // the grid's velocity (translate_grid)
+    std::vector<std::array<double, 2>> implicit_wall_;  // per solid block: this rank's sum of V L_implicit(u*)
 };
 
 Axis build_axis(const AxisConfig& c, bool periodic);

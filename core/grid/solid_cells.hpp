@@ -50,6 +50,17 @@ public:
     // (a bed or a lid).
     bool spans_periodic(const SolidBlock& b, int axis) const;
 
+    // How fill() sets face (gi, gj) of block b (global indices; component 0: the u face on x line gi in row gj,
+    // 1: the v face in column gi on y line gj): not at all (outside the block), to U (fixed), to 2 U - u_m
+    // (odd_mirror) or to U - (u_m - U) inner / outer (scaled_mirror), u_m the fluid face `mirror` and inner,
+    // outer the distances of the two faces from the side. The implicit diffusion takes its boundary rows from it.
+    struct HoleFace {
+        enum class Kind { outside, fixed, odd_mirror, scaled_mirror } kind = Kind::outside;
+        std::array<int, 2> mirror{};
+        double inner = 0.0, outer = 0.0;
+    };
+    HoleFace hole_face(const SolidBlock& b, int component, int gi, int gj) const;
+
 private:
     void fill_block(const SolidBlock& b, Velocity& vel) const;
 

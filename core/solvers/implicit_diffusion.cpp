@@ -17,6 +17,32 @@ int ghost_mirror(const Grid& grid, const BoundaryConditions& bc, Side s) {
 }
 }  // namespace
 
+double implicit_rate_u(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int i, int j) {
+    const auto& X = grid.lx();
+    const auto& Y = grid.ly();
+    const Field2D& u = vel.u;
+    const double aw = 2.0 * (nu + eddy.cell(i - 1, j)) * Y.w(j) / X.w(i - 1);
+    const double ae = 2.0 * (nu + eddy.cell(i, j)) * Y.w(j) / X.w(i);
+    const double as = (nu + eddy.corner(i, j)) * X.dc(i) / Y.dc(j);
+    const double an = (nu + eddy.corner(i, j + 1)) * X.dc(i) / Y.dc(j + 1);
+    const double c = u(i, j);
+    return (ae * (u(i + 1, j) - c) - aw * (c - u(i - 1, j)) + an * (u(i, j + 1) - c) - as * (c - u(i, j - 1))) /
+           (X.dc(i) * Y.w(j));
+}
+
+double implicit_rate_v(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int i, int j) {
+    const auto& X = grid.lx();
+    const auto& Y = grid.ly();
+    const Field2D& v = vel.v;
+    const double as = 2.0 * (nu + eddy.cell(i, j - 1)) * X.w(i) / Y.w(j - 1);
+    const double an = 2.0 * (nu + eddy.cell(i, j)) * X.w(i) / Y.w(j);
+    const double aw = (nu + eddy.corner(i, j)) * Y.dc(j) / X.dc(i);
+    const double ae = (nu + eddy.corner(i + 1, j)) * Y.dc(j) / X.dc(i + 1);
+    const double c = v(i, j);
+    return (an * (v(i, j + 1) - c) - as * (c - v(i, j - 1)) + ae * (v(i + 1, j) - c) - aw * (c - v(i - 1, j))) /
+           (X.w(i) * Y.dc(j));
+}
+
 ImplicitDiffusion::ImplicitDiffusion(const Grid& grid, const BoundaryConditions& bc, double tolerance)
     : grid_(grid), bc_(bc), tolerance_(tolerance) {
     int offsets[5][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // centre, west, east, south, north
@@ -78,6 +104,53 @@ int ImplicitDiffusion::apply(double nu, const EddyViscosity& eddy, double dt, Ve
     return std::max(solve<true>(u_, nu, eddy, dt, vel), solve<false>(v_, nu, eddy, dt, vel));
 }
 
+void ImplicitDiffusion::set_solid_cells(const SolidCells* solid) {
+    solid_ = solid && !solid->empty() ? solid : nullptr;
+    u_.holes_mapped = v_.holes_mapped = false;
+}
+
+// The rows along the holes, from the fill's own description of each hole face (SolidCells::hole_face).
+template <bool is_u>
+void ImplicitDiffusion::map_holes(Component& c) {
+    c.holes_mapped = true;
+    c.hole.assign(solid_ ? c.cells : 0, 0);
+    c.neighbour.assign(solid_ ? c.cells : 0, {-1.0, -1.0, -1.0, -1.0});
+    if (!solid_) return;
+    const int component = is_u ? 0 : 1;
+    // The hole face at (a, b) (global indices along and across the component), if any.
+    auto face_at = [&](int a, int b) {
+        const int gi = is_u ? a : b, gj = is_u ? b : a;
+        for (const SolidBlock& block : solid_->blocks()) {
+            const SolidCells::HoleFace f = solid_->hole_face(block, component, gi, gj);
+            if (f.kind != SolidCells::HoleFace::Kind::outside) return f;
+        }
+        return SolidCells::HoleFace{};
+    };
+    const int a0 = is_u ? c.lower[0] : c.lower[1], a1 = is_u ? c.upper[0] : c.upper[1];
+    const int b0 = is_u ? c.lower[1] : c.lower[0], b1 = is_u ? c.upper[1] : c.upper[0];
+    const int count_a = a1 - a0 + 1, count_b = b1 - b0 + 1;
+    using Kind = SolidCells::HoleFace::Kind;
+    for (int b = b0; b <= b1; ++b)
+        for (int a = a0; a <= a1; ++a) {
+            const std::size_t k = is_u ? static_cast<std::size_t>(b - b0) * count_a + (a - a0)
+                                       : static_cast<std::size_t>(a - a0) * count_b + (b - b0);
+            if (face_at(a, b).kind != Kind::outside) {
+                c.hole[k] = 1;
+                continue;
+            }
+            const std::array<int, 2> self = is_u ? std::array<int, 2>{a, b} : std::array<int, 2>{b, a};
+            const std::array<std::array<int, 2>, 4> around = {{{a - 1, b}, {a + 1, b}, {a, b - 1}, {a, b + 1}}};
+            for (int n = 0; n < 4; ++n) {
+                const SolidCells::HoleFace f = face_at(around[n][0], around[n][1]);
+                if (f.kind == Kind::outside) continue;
+                double factor = 0.0;
+                if (f.mirror == self && f.kind == Kind::odd_mirror) factor = 1.0;
+                if (f.mirror == self && f.kind == Kind::scaled_mirror) factor = f.inner / f.outer;
+                c.neighbour[k][n] = factor;
+            }
+        }
+}
+
 // One component, written for u; v is the same with x and y exchanged (the lambdas below swap them).
 template <bool is_u>
 int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy, double dt, Velocity& vel) {
@@ -108,10 +181,19 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
         return is_u ? static_cast<std::size_t>(b) * count_a + (a - c.first)
                     : static_cast<std::size_t>(a - c.first) * nb + b;
     };
+    if (!c.holes_mapped) map_holes<is_u>(c);
     for (int b = 0; b < nb; ++b)
         for (int a = c.first; a < na; ++a) {
             const std::size_t k = box_index(a, b);
             const double volume = A.dc(a) * B.w(b);
+            if (!c.hole.empty() && c.hole[k]) {  // a hole's face: du = 0
+                double* v = &c.values[5 * k];
+                v[0] = volume;
+                v[1] = v[2] = v[3] = v[4] = 0.0;
+                c.rhs[k] = 0.0;
+                c.solution[k] = 0.0;
+                continue;
+            }
             // Coefficients dt * flux area * nu_e / distance of the four neighbours.
             const double aw = dt * 2.0 * cell(a - 1, b) * B.w(b) / A.w(a - 1);
             const double ae = dt * 2.0 * cell(a, b) * B.w(b) / A.w(a);
@@ -134,6 +216,16 @@ int ImplicitDiffusion::solve(Component& c, double nu, const EddyViscosity& eddy,
             if (mirror_high_b != 0 && b == nb - 1) {
                 diag -= mirror_high_b * an;
                 n = 0.0;
+            }
+            if (!c.neighbour.empty()) {
+                const std::array<double, 4>& h = c.neighbour[k];
+                double* coupling[4] = {&w, &e, &s, &n};
+                const double coefficient[4] = {aw, ae, as, an};
+                for (int q = 0; q < 4; ++q)
+                    if (h[q] >= 0.0) {
+                        diag += h[q] * coefficient[q];
+                        *coupling[q] = 0.0;
+                    }
             }
             double* v = &c.values[5 * k];
             v[0] = diag;

@@ -18,15 +18,27 @@
 // a side du mirrors the way u does (odd on wall and inflow sides, even on slip and outflow sides). Multiplied
 // by the face's control volume the matrix is symmetric and diagonally dominant; hypre's Struct PCG with a
 // Jacobi (diagonal) preconditioner solves it in a few iterations. First order in time for the diffusion.
+//
+// A body-fitted hole (core/grid/solid_cells.hpp) is a wall of the same kind: its faces are not unknowns (identity
+// rows, du = 0: the fill sets them from U), a face next to one drops the coupling, and where the hole's face is
+// the mirror of this very face (the tangential faces inside a side, u = U - (u_m - U) inner / outer) the mirror's
+// du = -(inner / outer) du folds into the diagonal, as the odd ghost of a domain wall does.
 #include <HYPRE_struct_ls.h>
 
 #include <array>
 #include <vector>
 
 #include "boundary_conditions.hpp"
+#include "solid_cells.hpp"
 #include "viscous_stress.hpp"
 
 namespace chute {
+
+// The rate L(u) of the implicit operator above (m/s^2) at the owned u face (i, j) or v face (i, j) (local
+// indices), from a velocity whose halos, ghosts and hole faces are filled. The operator is conservative: the sum
+// of V L(u) over a set of faces is the viscous momentum that crossed the set's boundary.
+double implicit_rate_u(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int i, int j);
+double implicit_rate_v(const Grid& grid, double nu, const EddyViscosity& eddy, const Velocity& vel, int i, int j);
 
 class ImplicitDiffusion {
 public:
@@ -42,6 +54,8 @@ public:
     // Turn the explicit prediction `vel` (owned faces, halos and ghosts filled) into the backward-Euler one.
     // Returns the larger PCG iteration count of the two components.
     int apply(double nu, const EddyViscosity& eddy, double dt, Velocity& vel);
+    // The cells a body-fitted hole takes (null: none); the rows along it are rebuilt at the next apply().
+    void set_solid_cells(const SolidCells* solid);
 
 private:
     struct Component {
@@ -54,7 +68,16 @@ private:
         HYPRE_StructVector b = nullptr, x = nullptr;
         HYPRE_StructSolver pcg = nullptr;
         std::vector<double> values, rhs, solution;
+        // Along a hole, per unknown (hypre order): 1 for a hole face (identity row); for the four neighbours
+        // (stencil order west, east, south, north in the component's own a/b terms: a-1, a+1, b-1, b+1) a
+        // negative value keeps the coupling, 0 drops it (du = 0 there), f > 0 drops it and adds f times its
+        // coefficient to the diagonal (the neighbour mirrors this face: du_m = -f du).
+        std::vector<char> hole;
+        std::vector<std::array<double, 4>> neighbour;
+        bool holes_mapped = false;
     };
+    template <bool is_u>
+    void map_holes(Component& c);
     void create(Component& c, bool is_u);
     void destroy(Component& c);
     template <bool is_u>
@@ -63,6 +86,7 @@ private:
     const Grid& grid_;
     const BoundaryConditions& bc_;
     double tolerance_;
+    const SolidCells* solid_ = nullptr;
     HYPRE_StructStencil stencil_ = nullptr;
     Component u_, v_;
 };

@@ -79,8 +79,14 @@ TEST(BodyFitted, RefusesWhatItCannotCarryNamingTheKey) {
 //   921.9 / 929.7 / 933.6 N). That is order 0.45, the rate of the Stokes corner singularity at the square's
 //   convex corners (stress ~ r^-0.46, so its integral converges as h^0.54; Moffatt 1964, JFM 18:1); (a) does not
 //   see it, being a balance of fluxes rather than an integral of the stress.
-TEST(BodyFitted, SquareHoldsBackTheBodyForceAtSteadyState) {
-    Model model(parse_case_text(kPeriodicSquare), MPI_COMM_WORLD);
+// The same with implicit diffusion: the viscous flux across the sides is then the implicit operator's, which (a)
+// takes from u* (FlowSolver::solid_momentum_rate); the balance closes as tightly.
+class SquareAtSteadyState : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SquareAtSteadyState, HoldsBackTheBodyForce) {
+    // The implicit step from rest would be the whole run: held to 0.05 s (a CFL number near 1 at steady state).
+    Model model(parse_case_text(kPeriodicSquare, {"numerics.diffusion=" + GetParam(), "numerics.max_dt=0.05"}),
+                MPI_COMM_WORLD);
     const double rho = 1000.0, f = 1.0;
     // u-momentum cells: every u face but the square's own (x lines 6..10 across rows 6..9).
     const int faces = 16 * 16 - 5 * 4;
@@ -101,6 +107,8 @@ TEST(BodyFitted, SquareHoldsBackTheBodyForceAtSteadyState) {
     EXPECT_NEAR(forces.forcing.y(), 0.0, 1e-9 * expected);
     EXPECT_NEAR(forces.surface.total().y(), 0.0, 1e-9 * expected);
 }
+
+INSTANTIATE_TEST_SUITE_P(BodyFitted, SquareAtSteadyState, ::testing::Values("explicit", "implicit"));
 
 namespace {
 
@@ -233,9 +241,14 @@ output: {plots: false}
 // k-epsilon beside a body-fitted side is the domain wall's: the bed block's top side against the channel's
 // bottom wall, same log law in the first cells (production, epsilon), same wall eddy viscosity on the side.
 // Velocity and k agree to round-off after 100 steps of a flow with both components (a cross-stream start).
-TEST(BodyFitted, KEpsilonBesideASideIsTheDomainWall) {
-    Model wall(parse_case_text(turbulent_channel(false)), MPI_COMM_WORLD);
-    Model bed(parse_case_text(turbulent_channel(true)), MPI_COMM_WORLD);
+// With implicit diffusion the bed's rows in the implicit solve are the wall's (its hole faces identity rows, the
+// mirrored faces folded into the diagonal, core/solvers/implicit_diffusion.hpp).
+class BesideASide : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BesideASide, KEpsilonIsTheDomainWalls) {
+    const std::string diffusion = "numerics.diffusion=" + GetParam();
+    Model wall(parse_case_text(turbulent_channel(false), {diffusion}), MPI_COMM_WORLD);
+    Model bed(parse_case_text(turbulent_channel(true), {diffusion}), MPI_COMM_WORLD);
     wall.flow().project_start();  // as the bed's model did when it took the solid cells
     for (int k = 0; k < 100; ++k) {
         take_step(wall, 0.0);
@@ -259,6 +272,8 @@ TEST(BodyFitted, KEpsilonBesideASideIsTheDomainWall) {
     EXPECT_LT(du, 1e-10 * scale);
     EXPECT_LT(dk, 1e-10 * kscale);
 }
+
+INSTANTIATE_TEST_SUITE_P(BodyFitted, BesideASide, ::testing::Values("explicit", "implicit"));
 
 namespace {
 
