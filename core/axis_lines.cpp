@@ -8,7 +8,8 @@ namespace chute {
 std::vector<double> axis_lines(const AxisConfig& c) {
     if (c.spacing == "lines") return c.lines;
     if (c.spacing == "tanh") return tanh_lines(c.start, c.end, c.cells, c.beta);
-    if (c.spacing == "clustered") return clustered_lines(c.start, c.end, c.core[0], c.core[1], c.core_cells, c.ratio);
+    if (c.spacing == "clustered")
+        return clustered_lines(c.start, c.end, c.core[0], c.core[1], c.core_cells, c.ratio, c.first, c.max_width);
     if (c.spacing == "geometric") return geometric_lines(c.start, c.end, c.cells, c.ratio);
     return uniform_lines(c.start, c.end, c.cells);
 }

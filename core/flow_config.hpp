@@ -19,6 +19,8 @@ struct AxisConfig {
     std::vector<double> lines;             // explicit lines (spacing: lines)
     std::array<double, 2> core{0.0, 0.0};  // clustered: the uniform window
     int core_cells = 0;                    // clustered: cells in the window
+    double first = 0.0;                    // clustered: width at the window's ends (0: uniform window)
+    double max_width = 0.0;                // clustered: the outer cells' cap (0: none)
 };
 
 enum class BoundaryType { wall, slip, inflow, outflow, periodic };

@@ -48,14 +48,30 @@ void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
             if (!(a.ratio >= 1.0))
                 r.fail(p + ".ratio",
                        "clustered cells grow away from the window: ratio >= 1, got " + exact_text(a.ratio));
+            a.first = r.present(p + ".first") ? r.number(p + ".first") : 0.0;
+            a.max_width = r.present(p + ".max") ? r.number(p + ".max") : 0.0;
+            const double window = a.core[1] - a.core[0];
+            if (a.first > 0.0 && !(a.core_cells * a.first < window))
+                r.fail(p + ".first",
+                       "cells " + exact_text(a.first) +
+                           " wide at the window's ends cannot be clustered: " + std::to_string(a.core_cells) +
+                           " of them (core_cells) span " + exact_text(a.core_cells * a.first) + ", the window [" +
+                           exact_text(a.core[0]) + ", " + exact_text(a.core[1]) + "] only " + exact_text(window) +
+                           " (a smaller first, or fewer core_cells)");
+            const double outermost = a.first > 0.0 ? a.first : window / a.core_cells;
+            if (a.max_width > 0.0 && !(a.max_width >= outermost))
+                r.fail(p + ".max", "the outer cells grow from the window's end cell (" + exact_text(outermost) +
+                                       " m): max must be at least that, got " + exact_text(a.max_width));
             // Counted before the lines are made: ratio 1 across a long domain would ask for more than memory holds.
-            const double count = clustered_cell_count(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio);
+            const double count =
+                clustered_cell_count(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio, a.first, a.max_width);
             if (count > kMaxCells)
                 r.fail(p + ".core_cells", "the window's " + std::to_string(a.core_cells) + " cells, growing by ratio " +
                                               exact_text(a.ratio) + " to start and end, make about " +
                                               exact_text(count) + " cells along this axis; a case may have at most " +
                                               exact_text(kMaxCells) + " cells in all");
-            const auto lines = clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio);
+            const auto lines =
+                clustered_lines(a.start, a.end, a.core[0], a.core[1], a.core_cells, a.ratio, a.first, a.max_width);
             a.cells = static_cast<int>(lines.size()) - 1;
         } else {
             a.cells = static_cast<int>(r.integer(p + ".cells"));
@@ -219,6 +235,24 @@ std::vector<CaseKey> flow_keys() {
          .when_key = "spacing",
          .when_values = {"clustered"},
          .meaning = "Number of cells across the window."},
+        {.path = "domain.<axis>.first",
+         .type = K::number,
+         .min = above(0),
+         .when_key = "spacing",
+         .when_values = {"clustered"},
+         .units = "m",
+         .meaning = "Optional: the width of the window's end cells, as a body-fitted mesh gives its first cell at "
+                    "a body's faces (the window is then the body's extent). The window's cells grow geometrically "
+                    "from both ends towards its middle and the outer cells grow by `ratio` from `first`. Not "
+                    "given: a uniform window."},
+        {.path = "domain.<axis>.max",
+         .type = K::number,
+         .min = above(0),
+         .when_key = "spacing",
+         .when_values = {"clustered"},
+         .units = "m",
+         .meaning = "Optional: the largest outer cell; the cells grow by `ratio` up to it, then keep it. Not "
+                    "given: they grow to the domain's ends."},
         {.path = "domain.<axis>.lines",
          .type = K::number_list,
          .required = true,

@@ -1,7 +1,9 @@
 #include "axis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace chute {
 
@@ -55,11 +57,13 @@ std::vector<double> geometric_lines(double start, double end, int cells, double 
 }
 
 namespace {
-// Widths growing by `ratio` from h * ratio until they span `length`, then scaled to span it exactly.
-std::vector<double> growing_widths(double length, double h, double ratio) {
+// Widths growing by `ratio` from h * ratio (at most max_width, if > 0) until they span `length`, then scaled to
+// span it exactly.
+std::vector<double> growing_widths(double length, double h, double ratio, double max_width) {
     std::vector<double> w;
     double sum = 0.0;
     for (double width = h * ratio; sum < length * (1.0 - 1e-12); width *= ratio) {
+        if (max_width > 0.0) width = std::min(width, max_width);
         w.push_back(width);
         sum += width;
     }
@@ -71,19 +75,51 @@ std::vector<double> growing_widths(double length, double h, double ratio) {
     for (double& x : w) x *= length / sum;
     return w;
 }
+
+// Widths first r^min(k, n-1-k), k = 0..n-1: the window's clustered cells.
+double window_sum(int n, double first, double r) {
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) sum += first * std::pow(r, std::min(k, n - 1 - k));
+    return sum;
+}
 }  // namespace
 
+double window_ratio(double length, int cells, double first) {
+    if (!(cells * first < length))
+        throw std::invalid_argument("cells of width " + std::to_string(first) + " at the window's ends cannot be " +
+                                    "clustered: " + std::to_string(cells) + " of them already span " +
+                                    std::to_string(cells * first) + " >= the window's " + std::to_string(length));
+    double lo = 1.0, hi = 2.0;
+    while (window_sum(cells, first, hi) < length) hi *= 2.0;
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (window_sum(cells, first, mid) < length ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 std::vector<double> clustered_lines(double start, double end, double core_start, double core_end, int core_cells,
-                                    double ratio) {
-    const double h = (core_end - core_start) / core_cells;
+                                    double ratio, double first, double max_width) {
+    const double length = core_end - core_start;
+    std::vector<double> window(core_cells, length / core_cells);
+    if (first > 0.0) {
+        const double r = window_ratio(length, core_cells, first);
+        for (int k = 0; k < core_cells; ++k) window[k] = first * std::pow(r, std::min(k, core_cells - 1 - k));
+    }
+    const double h = first > 0.0 ? first : length / core_cells;  // the window's outermost cells
     std::vector<double> x;
-    const auto below = core_start > start ? growing_widths(core_start - start, h, ratio) : std::vector<double>{};
-    const auto above = end > core_end ? growing_widths(end - core_end, h, ratio) : std::vector<double>{};
+    const auto below =
+        core_start > start ? growing_widths(core_start - start, h, ratio, max_width) : std::vector<double>{};
+    const auto above = end > core_end ? growing_widths(end - core_end, h, ratio, max_width) : std::vector<double>{};
     double pos = start;
     x.push_back(pos);
     for (auto it = below.rbegin(); it != below.rend(); ++it) x.push_back(pos += *it);
     x.back() = core_start;
-    for (int k = 1; k <= core_cells; ++k) x.push_back(core_start + h * k);
+    if (first > 0.0) {
+        for (int k = 0; k < core_cells; ++k) x.push_back(x.back() + window[k]);
+    } else {
+        for (int k = 1; k <= core_cells; ++k) x.push_back(core_start + h * k);
+    }
     x.back() = core_end;
     pos = core_end;
     for (double w : above) x.push_back(pos += w);
@@ -91,14 +127,21 @@ std::vector<double> clustered_lines(double start, double end, double core_start,
     return x;
 }
 
-double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells,
-                            double ratio) {
-    const double h = (core_end - core_start) / core_cells;
+double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells, double ratio,
+                            double first, double max_width) {
+    const double h = first > 0.0 ? first : (core_end - core_start) / core_cells;
     // Widths h r, h r^2, ..., h r^n span L when h r (r^n - 1) / (r - 1) >= L: n = log(1 + L (r - 1) / (h r)) / log r.
-    const auto side = [&](double length) {
+    const auto grow = [&](double length) {
         if (!(length > 0.0)) return 0.0;
         if (ratio - 1.0 < 1e-12) return std::ceil(length / h);
         return std::ceil(std::log1p(length * (ratio - 1.0) / (h * ratio)) / std::log(ratio));
+    };
+    const auto side = [&](double length) {
+        if (!(max_width > h) || ratio - 1.0 < 1e-12) return grow(length);
+        // Up to the cap, then cells of max_width.
+        const double n = std::ceil(std::log(max_width / h) / std::log(ratio));
+        const double spanned = h * ratio * (std::pow(ratio, n) - 1.0) / (ratio - 1.0);
+        return spanned >= length ? grow(length) : n + std::ceil((length - spanned) / max_width);
     };
     return core_cells + side(core_start - start) + side(end - core_end);
 }

@@ -42,11 +42,17 @@ std::vector<double> tanh_lines(double start, double end, int cells, double beta)
 std::vector<double> geometric_lines(double start, double end, int cells, double ratio);
 // Uniform cells of width (core_end - core_start) / core_cells on [core_start, core_end], growing by `ratio`
 // per cell from there to start and to end (the outer cells scaled slightly to fit): a fine window around a
-// body, coarse far away.
+// body, coarse far away. A body-fitted mesh's form, with `first` > 0: the window's cells are clustered towards
+// both its ends, `first` wide there and growing geometrically towards its middle, and the outer cells grow from
+// `first`; `max_width` > 0 caps the outer cells' growth (the domain's own spacing far out). std::invalid_argument
+// if `first` cannot be clustered (core_cells * first >= the window).
 std::vector<double> clustered_lines(double start, double end, double core_start, double core_end, int core_cells,
-                                    double ratio);
+                                    double ratio, double first = 0.0, double max_width = 0.0);
 // The number of cells clustered_lines() makes, to within one on each side of the window, without making them
 // (a case may ask for more than memory holds: ratio 1 across a long domain).
-double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells, double ratio);
+double clustered_cell_count(double start, double end, double core_start, double core_end, int core_cells, double ratio,
+                            double first = 0.0, double max_width = 0.0);
+// The growth ratio of the window's clustered cells (widths first r^k from both ends), 1 for uniform.
+double window_ratio(double length, int cells, double first);
 
 }  // namespace chute

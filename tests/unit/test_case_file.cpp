@@ -381,6 +381,13 @@ TEST(CaseFile, GridBeyondTheCellLimitIsRejectedBeforeItIsMade) {
                                        "core_cells: 10, ratio: 1}"}),
                    {"domain.x.core_cells", "growing by ratio 1"});
     EXPECT_EQ(parse_case_text(kMinimal, {clustered + "core_cells: 10, ratio: 1}"}).x.cells, 50);
+    // A window clustered towards its ends: first cells that do not fit, a cap below them.
+    expect_message(error_of(kMinimal, {clustered + "core_cells: 10, first: 0.05}"}),
+                   {"domain.x.first", "cannot be clustered", "core_cells"});
+    expect_message(error_of(kMinimal, {clustered + "core_cells: 10, first: 0.005, max: 0.001}"}),
+                   {"domain.x.max", "at least"});
+    EXPECT_GT(parse_case_text(kMinimal, {clustered + "core_cells: 10, first: 0.005, ratio: 1.1, max: 0.05}"}).x.cells,
+              10);
 }
 
 // Found by the case fuzz: lines that a strong stretching makes equal in double precision (tanh beta 1e300,

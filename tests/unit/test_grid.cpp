@@ -2,6 +2,8 @@
 // that move during a run (the body-fitted band will move them every step).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "case_config.hpp"
@@ -32,6 +34,46 @@ TEST(Axis, GeneratorsHitTheEndsAndStretchAsAsked) {
     const auto g = geometric_lines(0.0, 1.0, 8, 1.2);
     EXPECT_NEAR((g[2] - g[1]) / (g[1] - g[0]), 1.2, 1e-12);
     EXPECT_THROW(Axis({0.0, 1.0, 0.5}, false), std::invalid_argument);
+}
+
+// The study's body-fitted mesh (sec. 3.3): 30 cells across the 0.3 m block, 5 mm at its faces, growing away from
+// them (here by 10 % per cell up to 5 cm, then uniform). The window's ends are lines; its cells are symmetric and
+// grow by one ratio towards its middle; the outer cells start from the face's width and keep to the cap.
+TEST(Axis, ClusteredTowardsABodysFaces) {
+    const auto x = clustered_lines(-1.5, 4.5, -0.15, 0.15, 30, 1.1, 0.005, 0.05);
+    EXPECT_DOUBLE_EQ(x.front(), -1.5);
+    EXPECT_DOUBLE_EQ(x.back(), 4.5);
+    const auto lo = std::find(x.begin(), x.end(), -0.15), hi = std::find(x.begin(), x.end(), 0.15);
+    ASSERT_NE(lo, x.end());
+    ASSERT_NE(hi, x.end());
+    ASSERT_EQ(hi - lo, 30);
+    const std::size_t a = lo - x.begin(), b = hi - x.begin();
+    EXPECT_NEAR(x[a + 1] - x[a], 0.005, 1e-12);
+    EXPECT_NEAR(x[b] - x[b - 1], 0.005, 1e-12);
+    const double r = (x[a + 2] - x[a + 1]) / (x[a + 1] - x[a]);
+    EXPECT_GT(r, 1.0);
+    for (std::size_t k = 0; k < 15; ++k) {
+        EXPECT_NEAR(x[a + k + 1] - x[a + k], x[b - k] - x[b - k - 1], 1e-12);  // symmetric
+        if (k > 0 && k < 14) {
+            EXPECT_NEAR((x[a + k + 1] - x[a + k]) / (x[a + k] - x[a + k - 1]), r, 1e-9);
+        }
+    }
+    // Outside: the first cell beside each face about 5.5 mm (5 mm x 1.1, scaled by at most a few % to fit), growth
+    // at most 1.1 per cell, never wider than the cap (to the scaling).
+    EXPECT_NEAR((x[a] - x[a - 1]) / 0.0055, 1.0, 0.05);
+    EXPECT_NEAR((x[b + 1] - x[b]) / 0.0055, 1.0, 0.05);
+    double widest = 0.0;
+    for (std::size_t k = 1; k < x.size(); ++k) {
+        const double w = x[k] - x[k - 1];
+        widest = std::max(widest, w);
+        if (k > 1) {
+            EXPECT_LT(w / (x[k - 1] - x[k - 2]), 1.1 * 1.05) << k;
+            EXPECT_GT(w / (x[k - 1] - x[k - 2]), 1.0 / (1.1 * 1.05)) << k;
+        }
+    }
+    EXPECT_LT(widest, 0.05 * 1.05);
+    EXPECT_NEAR(clustered_cell_count(-1.5, 4.5, -0.15, 0.15, 30, 1.1, 0.005, 0.05), x.size() - 1.0, 2.0);
+    EXPECT_THROW(clustered_lines(-1.0, 1.0, -0.15, 0.15, 30, 1.1, 0.01), std::invalid_argument);  // 30 x 1 cm
 }
 
 TEST(Grid, PatchesCoverTheDomainOnce) {

@@ -57,6 +57,7 @@ chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAt
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
+chute_validation(square_cylinder_re100_body_fitted BluffBodies.SquareCylinderRe100BodyFittedConverges 2 "validation;slow")
 chute_validation(oscillating_cylinder_dutsch BluffBodies.OscillatingCylinderDutsch 2 "validation;slow")
 
 # Free bodies
