@@ -8,6 +8,7 @@
 #include <string>
 
 #include "case_file.hpp"
+#include "falling_square.hpp"
 #include "model.hpp"
 #include "step.hpp"
 
@@ -277,32 +278,9 @@ INSTANTIATE_TEST_SUITE_P(BodyFitted, BesideASide, ::testing::Values("explicit", 
 
 namespace {
 
-// A square of side 1 free to fall (or rise) along y in water, its x and rotation locked, carried body-fitted:
-// the grid moves with it, water at rest enters below and leaves above (a convective outflow). 8 cells across.
 CaseConfig falling_square(double density) {
-    return parse_case_text(R"(
-name: falling_square
-domain:
-  x: {start: -2.0, end: 2.0, cells: 32}
-  y: {start: -3.0, end: 5.0, cells: 64}
-fluid: {density: 1000.0, viscosity: 1.0e-3}
-boundaries:
-  left: {type: slip}
-  right: {type: slip}
-  bottom: {type: inflow, velocity: [0.0, 0.0]}
-  top: {type: outflow, kind: convective}
-bodies:
-  square:
-    shape: rectangle
-    centre: [0.0, 0.0]
-    size: [1.0, 1.0]
-    carrier: body_fitted
-    motion: {type: free, lock_x: true, lock_rotation: true}
-numerics: {convection: van_leer, cfl: 0.5, poisson: {tolerance: 1.0e-12}}
-time: {end: 1.0}
-output: {plots: false}
-)",
-                           {"bodies.square.density=" + std::to_string(density)});
+    return parse_case_text(falling_square_case(32, 64), {"bodies.square.density=" + std::to_string(density),
+                                                         "numerics.poisson={tolerance: 1.0e-12}"});
 }
 
 }  // namespace

@@ -105,6 +105,17 @@ CaseConfig stream_channel(double x_start) {
     return c;
 }
 
+// A square of side 1 at the origin, carried body-fitted.
+BodyConfig body_fitted_square() {
+    BodyConfig square;
+    square.name = "square";
+    square.shape = BodyShape::rectangle;
+    square.centre = {0.0, 0.0};
+    square.size = {1.0, 1.0};
+    square.carrier = CarrierKind::body_fitted;
+    return square;
+}
+
 CaseConfig cavity() {
     CaseConfig c;
     c.x = AxisConfig{0.0, 1.0, 48, "tanh", 1.2, 1.05, {}};
@@ -309,13 +320,7 @@ TEST(Parallel, BodyFittedSquareMatchesOneRank) {
     c.density = 1.0;
     c.cfl = 0.5;
     c.poisson_tolerance = 1e-10;
-    BodyConfig square;
-    square.name = "square";
-    square.shape = BodyShape::rectangle;
-    square.centre = {0.0, 0.0};
-    square.size = {1.0, 1.0};
-    square.carrier = CarrierKind::body_fitted;
-    c.bodies = {square};
+    c.bodies = {body_fitted_square()};
     for (const std::array<int, 2> split : {std::array<int, 2>{2, 1}, std::array<int, 2>{1, 2}}) {
         auto run = [&](MPI_Comm comm, std::array<int, 2> ranks) {
             CaseConfig cc = c;
@@ -342,12 +347,7 @@ TEST(Parallel, FreeBodyFittedSquareMatchesOneRank) {
     c.viscosity = 0.01;
     c.density = 1.0;
     c.poisson_tolerance = 1e-10;
-    BodyConfig square;
-    square.name = "square";
-    square.shape = BodyShape::rectangle;
-    square.centre = {0.0, 0.0};
-    square.size = {1.0, 1.0};
-    square.carrier = CarrierKind::body_fitted;
+    BodyConfig square = body_fitted_square();
     square.density = 2.0;
     square.motion.type = MotionType::free;
     square.motion.locked = {false, true, true};

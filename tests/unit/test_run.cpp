@@ -16,6 +16,7 @@
 #include "checkpoint.hpp"
 #include "chute_process.hpp"
 #include "csv_column.hpp"
+#include "falling_square.hpp"
 #include "hdf5_file.hpp"
 #include "simulation.hpp"
 
@@ -65,31 +66,41 @@ std::vector<double> read_field(const fs::path& file, const std::string& name) {
     return f.read("/fields/" + name);
 }
 
+// A case run straight into `straight_dir`, and again into `split_dir` stopped after `stop_after` steps and restarted
+// from the checkpoint it wrote: what a restart test compares.
+struct RestartRuns {
+    RunSummary straight, stopped, resumed;
+};
+
+RestartRuns run_straight_and_restarted(const CaseConfig& config, const fs::path& straight_dir,
+                                       const fs::path& split_dir, int stop_after) {
+    RunOptions quiet;
+    quiet.quiet = true;
+    RestartRuns r;
+    RunOptions a = quiet;
+    a.out_dir = straight_dir;
+    r.straight = run_simulation(config, a, MPI_COMM_WORLD);
+    CaseConfig first_part = config;
+    first_part.max_steps = stop_after;
+    RunOptions b = quiet;
+    b.out_dir = split_dir;
+    r.stopped = run_simulation(first_part, b, MPI_COMM_WORLD);
+    RunOptions c = quiet;
+    c.out_dir = split_dir;
+    c.restart = r.stopped.last_checkpoint;
+    r.resumed = run_simulation(config, c, MPI_COMM_WORLD);
+    return r;
+}
+
 }  // namespace
 
 // A run stopped at step 40 and restarted from its checkpoint ends bit for bit where the straight run
 // ends (same fields, same time-series rows): every piece of state is in the checkpoint.
 TEST(Restart, StopAndRestartEqualsStraightRun) {
     const fs::path straight_dir = scratch("straight"), split_dir = scratch("split");
-    RunOptions quiet;
-    quiet.quiet = true;
-
-    CaseConfig config = parse_case_text(kChannel);
-    RunOptions a = quiet;
-    a.out_dir = straight_dir;
-    const RunSummary straight = run_simulation(config, a, MPI_COMM_WORLD);
-
-    CaseConfig first_part = config;
-    first_part.max_steps = 40;
-    RunOptions b = quiet;
-    b.out_dir = split_dir;
-    const RunSummary stopped = run_simulation(first_part, b, MPI_COMM_WORLD);
+    const auto [straight, stopped, resumed] =
+        run_straight_and_restarted(parse_case_text(kChannel), straight_dir, split_dir, 40);
     ASSERT_EQ(stopped.steps, 40);
-    RunOptions c = quiet;
-    c.out_dir = split_dir;
-    c.restart = stopped.last_checkpoint;
-    const RunSummary resumed = run_simulation(config, c, MPI_COMM_WORLD);
-
     EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
     EXPECT_EQ(resumed.time, straight.time);
     int rank = 0;
@@ -149,26 +160,13 @@ TEST(Run, StepShrinksGraduallyToLandOnTheEndTime) {
 // and the fields match the straight run bit for bit.
 TEST(Restart, FreeBodyRestartEqualsStraightRun) {
     const fs::path straight_dir = scratch("free_straight"), split_dir = scratch("free_split");
-    RunOptions quiet;
-    quiet.quiet = true;
     CaseConfig config =
         load_case(std::string(CHUTE_SOURCE_DIR) + "/examples/settling_cylinder/case.yaml",
                   {"domain.x={start: 0.0, end: 0.01, cells: 32}", "domain.y={start: 0.0, end: 0.01, cells: 32}",
                    "bodies.disc.centre=[0.005, 0.0025]", "bodies.disc.density=3000", "time.end=0.08",
                    "contact.distance=0.0003", "output={fields_interval: 0.0, plots: false}"});
-    RunOptions a = quiet;
-    a.out_dir = straight_dir;
-    const RunSummary straight = run_simulation(config, a, MPI_COMM_WORLD);
-
-    CaseConfig first_part = config;
-    first_part.max_steps = 25;  // t = 0.024: the impacts come after the restart
-    RunOptions b = quiet;
-    b.out_dir = split_dir;
-    const RunSummary stopped = run_simulation(first_part, b, MPI_COMM_WORLD);
-    RunOptions c = quiet;
-    c.out_dir = split_dir;
-    c.restart = stopped.last_checkpoint;
-    const RunSummary resumed = run_simulation(config, c, MPI_COMM_WORLD);
+    // Stopped at t = 0.024: the impacts come after the restart.
+    const auto [straight, stopped, resumed] = run_straight_and_restarted(config, straight_dir, split_dir, 25);
     EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -192,45 +190,9 @@ TEST(Restart, FreeBodyRestartEqualsStraightRun) {
 TEST(Restart, BodyFittedFreeBodyRestartEqualsStraightRun) {
     for (const std::string model : {"laminar", "k_epsilon"}) {
         const fs::path straight_dir = scratch("bf_straight_" + model), split_dir = scratch("bf_split_" + model);
-        RunOptions quiet;
-        quiet.quiet = true;
-        const CaseConfig config = parse_case_text(R"(
-name: falling_square
-domain:
-  x: {start: -2.0, end: 2.0, cells: 16}
-  y: {start: -3.0, end: 5.0, cells: 32}
-fluid: {density: 1000.0, viscosity: 1.0e-3}
-boundaries:
-  left: {type: slip}
-  right: {type: slip}
-  bottom: {type: inflow, velocity: [0.0, 0.0]}
-  top: {type: outflow, kind: convective}
-bodies:
-  square:
-    shape: rectangle
-    centre: [0.0, 0.0]
-    size: [1.0, 1.0]
-    carrier: body_fitted
-    density: 2500.0
-    motion: {type: free, lock_x: true, lock_rotation: true}
-turbulence: {velocity_scale: 1.0}
-numerics: {convection: van_leer, cfl: 0.5}
-time: {end: 1.5}
-output: {fields_interval: 0.0, plots: false}
-)",
-                                                  {"turbulence.model=" + model});
-        RunOptions a = quiet;
-        a.out_dir = straight_dir;
-        const RunSummary straight = run_simulation(config, a, MPI_COMM_WORLD);
-        CaseConfig first_part = config;
-        first_part.max_steps = 10;
-        RunOptions b = quiet;
-        b.out_dir = split_dir;
-        const RunSummary stopped = run_simulation(first_part, b, MPI_COMM_WORLD);
-        RunOptions c = quiet;
-        c.out_dir = split_dir;
-        c.restart = stopped.last_checkpoint;
-        const RunSummary resumed = run_simulation(config, c, MPI_COMM_WORLD);
+        const CaseConfig config = parse_case_text(
+            falling_square_case(16, 32), {"turbulence={model: " + model + ", velocity_scale: 1.0}", "time.end=1.5"});
+        const auto [straight, stopped, resumed] = run_straight_and_restarted(config, straight_dir, split_dir, 10);
         EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
         EXPECT_GT(straight.steps, 30);
         int rank = 0;
@@ -258,18 +220,12 @@ output: {fields_interval: 0.0, plots: false}
             EXPECT_LT(worst, 1e-9 * scale) << name;
         }
         // The body's last record: where it is and how fast it falls.
-        auto last_numbers = [](const std::string& text) {
-            const std::string line = text.substr(text.rfind('\n', text.size() - 2) + 1);
-            std::vector<double> v;
-            std::stringstream in(line);
-            for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::stod(cell));
-            return v;
-        };
-        const auto x = last_numbers(series), y = last_numbers(read_text(split_dir / "body_square.csv"));
-        ASSERT_EQ(x.size(), y.size());
-        EXPECT_EQ(x[0], y[0]);                           // t
-        EXPECT_NEAR(x[2], y[2], 1e-9 * std::abs(x[2]));  // y
-        EXPECT_NEAR(x[5], y[5], 1e-9 * std::abs(x[5]));  // v
+        for (const char* column : {"t", "y", "v"}) {
+            const auto x = csv_column(straight_dir / "body_square.csv", column);
+            const auto y = csv_column(split_dir / "body_square.csv", column);
+            ASSERT_EQ(x.size(), y.size()) << column;
+            EXPECT_NEAR(x.back(), y.back(), 1e-9 * std::abs(x.back())) << column;
+        }
     }
 }
 
@@ -281,29 +237,8 @@ TEST(Output, BodyFittedFieldsCarryTheGridOfTheirTime) {
     RunOptions options;
     options.quiet = true;
     options.out_dir = dir;
-    const CaseConfig config = parse_case_text(R"(
-name: falling_square
-domain:
-  x: {start: -2.0, end: 2.0, cells: 16}
-  y: {start: -3.0, end: 5.0, cells: 32}
-fluid: {density: 1000.0, viscosity: 1.0e-3}
-boundaries:
-  left: {type: slip}
-  right: {type: slip}
-  bottom: {type: inflow, velocity: [0.0, 0.0]}
-  top: {type: outflow, kind: convective}
-bodies:
-  square:
-    shape: rectangle
-    centre: [0.0, 0.0]
-    size: [1.0, 1.0]
-    carrier: body_fitted
-    density: 2500.0
-    motion: {type: free, lock_x: true, lock_rotation: true}
-numerics: {convection: van_leer, cfl: 0.5}
-time: {end: 0.6}
-output: {fields_interval: 0.3, plots: false}
-)");
+    const CaseConfig config =
+        parse_case_text(falling_square_case(16, 32), {"time.end=0.6", "output={fields_interval: 0.3, plots: false}"});
     run_simulation(config, options, MPI_COMM_WORLD);
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -314,14 +249,7 @@ output: {fields_interval: 0.3, plots: false}
             snapshots.push_back(e.path());
     std::sort(snapshots.begin(), snapshots.end());
     ASSERT_EQ(snapshots.size(), 3u);
-    const std::string series = read_text(dir / "body_square.csv");
-    // y of the block at the last record (t = 0.6, the last snapshot's time): the third column.
-    const std::string last = series.substr(series.rfind('\n', series.size() - 2) + 1);
-    std::stringstream in(last);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(in, cell, ',')) row.push_back(std::stod(cell));
-    const double fallen = row.at(2);
+    const double fallen = csv_column(dir / "body_square.csv", "y").back();  // at t = 0.6: the last snapshot's time
     ASSERT_LT(fallen, -0.1);
     const auto y0 = Hdf5File::open_read(snapshots.front()).read("y");
     const auto y2 = Hdf5File::open_read(snapshots.back()).read("y");
