@@ -4,13 +4,16 @@
 // Columns (SI units; angles in rad; forces on the body in N for the case's depth, torques in N m about
 // the body's centre; coefficients C = F / (0.5 rho U^2 L depth) with the body's reference U and L):
 //   t, x, y, angle, u, v, omega, ax, ay, alpha                      kinematics of the centre
-//   fx_forcing, fy_forcing, m_forcing                                (a) from the forcing sum
+//   fx_forcing, fy_forcing, m_forcing                                (a) from the forcing sum (body-fitted: the
+//                                                                    momentum the fluxes carried across the sides;
+//                                                                    its torque is (b)'s)
 //   fx_pressure, fy_pressure, m_pressure, fx_viscous, fy_viscous, m_viscous,
 //   fx_turbulent, fy_turbulent, m_turbulent (k-epsilon: Reynolds stress; 0 laminar),
 //   fx_surface, fy_surface, m_surface                                (b) surface stress, by kind and total
 //   cx_forcing, cy_forcing, cx_pressure, cy_pressure, cx_viscous, cy_viscous, cx_turbulent, cy_turbulent,
 //   cx_surface, cy_surface
-//   max_slip, rms_slip                                               no-slip error at the markers (m/s)
+//   max_slip, rms_slip                                               no-slip error at the markers (m/s;
+//                                                                    0 body-fitted: the no-slip is exact there)
 //   fx_gravity, fy_gravity, fx_buoyancy, fy_buoyancy,               free bodies (zero otherwise): gravity,
 //   fx_contact, fy_contact, m_contact,                               buoyancy, contact between impacts
 //   jx_contact, jy_contact, jm_contact, jx_water, jy_water, jm_water  an impact's impulses (N s, N m s)
