@@ -92,7 +92,7 @@ TEST(BluffBodies, SquareCylinderRe100) {
 // above (0.1502, 0.1496, 0.1493 measured 2026-11-24: the steps halve with h) and the finest grid sits 0.2 % above
 // the band's edge, so St is held to the band where the band applies, at convergence: its first-order extrapolation
 // St(h -> 0) = St_32 - (St_24 - St_32) h_32 / (h_24 - h_32), after checking the convergence is monotone. Slow:
-// about 25 minutes on 2 ranks.
+// about 9 minutes on 2 ranks (532 s on 2026-11-24).
 TEST(BluffBodies, SquareCylinderRe100BodyFittedConverges) {
     const int resolutions[3] = {16, 24, 32};
     Shedding s[3];

@@ -198,7 +198,7 @@ TEST(Turbulence, StudyBlockFallsAtTheExperimentsSpeed) {
 // 95 % of it), inside the experiment's 2.2 +/- 0.2 m/s and holding its speed. The resolutions are 30 and 40 cells
 // across: the example's 20 cells are within 0.5 % of 40 in the terminal speed but 2.5 % in t95 (docs/validation.md,
 // "The study's block carried body-fitted": t95 moves five times more than the terminal speed it is taken from).
-// Slow: about 6 minutes on 2 ranks.
+// Slow: about 3 minutes on 2 ranks (172 s on 2026-11-24).
 TEST(Turbulence, StudyBlockFallsBodyFittedConverged) {
     struct Fall {
         double terminal, t95, lo, hi;
