@@ -94,9 +94,8 @@ TEST(Turbulence, ChannelIndependentOfTheFirstCell) {
 // 0.12-0.145. Statistics over t = 50-150 D/U (about 14 periods) after the start-up.
 // The same case carried body-fitted (`--set bodies.square.carrier=body_fitted`: the square's sides lie on the
 // grid's lines) is SquareCylinderRe22000BodyFitted, with the same bands; measured 2026-11-24: C_D 2.041, C_L
-// rms 0.72, St 0.144 against the immersed 1.78, 0.235, 0.140 (the slow test: 2.044, 0.736, 0.1443 in 120 s on 2
-// ranks; docs/validation.md, "Square cylinder, Re 22,000,
-// carried body-fitted").
+// rms 0.72, St 0.144 against the immersed 1.78, 0.235, 0.140 (the slow test: 2.044, 0.736, 0.1443 in 120 s on
+// 2 ranks; docs/validation.md, "Square cylinder, Re 22,000, carried body-fitted").
 namespace {
 
 void square_cylinder_re22000(const std::vector<std::string>& set) {
