@@ -143,32 +143,9 @@ std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& 
 // half a cell from the side (turbulence/k_epsilon.cpp: production and epsilon from the log law there).
 std::vector<WallSample> BodyFitted::sample_walls(const Velocity& vel, const Field2D& k) const {
     std::vector<WallSample> out;
-    const Axis& X = grid_.x_axis();
-    const Axis& Y = grid_.y_axis();
-    const int ox = grid_.lx().offset, oy = grid_.ly().offset;
-    auto owned = [&](int i, int j) { return i >= 0 && i < grid_.nx() && j >= 0 && j < grid_.ny(); };
-    for (const SolidBlock& h : solid_.blocks()) {
-        for (const bool top : {false, true}) {
-            const int gj = top ? h.upper[1] : h.lower[1] - 1;
-            const double y = 0.5 * Y.width(gj);
-            for (int gi = h.lower[0]; gi < h.upper[0]; ++gi) {
-                const int i = gi - ox, j = gj - oy;
-                if (!owned(i, j)) continue;
-                const double slip = std::abs(0.5 * (vel.u(i, j) + vel.u(i + 1, j)) - h.velocity[0]);
-                out.push_back({i, j, y, 2.0 * y, y, slip, k(i, j), true});
-            }
-        }
-        for (const bool right : {false, true}) {
-            const int gi = right ? h.upper[0] : h.lower[0] - 1;
-            const double y = 0.5 * X.width(gi);
-            for (int gj = h.lower[1]; gj < h.upper[1]; ++gj) {
-                const int i = gi - ox, j = gj - oy;
-                if (!owned(i, j)) continue;
-                const double slip = std::abs(0.5 * (vel.v(i, j) + vel.v(i, j + 1)) - h.velocity[1]);
-                out.push_back({i, j, y, 2.0 * y, y, slip, k(i, j), true});
-            }
-        }
-    }
+    for (const SolidBlock& h : solid_.blocks())
+        for (const SideCell& c : side_cells(grid_, h, vel))
+            out.push_back({c.i, c.j, c.distance, 2.0 * c.distance, c.distance, c.slip.norm(), k(c.i, c.j), true});
     return out;
 }
 

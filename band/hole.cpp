@@ -50,4 +50,35 @@ SolidBlock hole_of(const Body& body, const Grid& grid) {
     return b;
 }
 
+std::vector<SideCell> side_cells(const Grid& grid, const SolidBlock& hole, const Velocity& vel) {
+    const Axis& X = grid.x_axis();
+    const Axis& Y = grid.y_axis();
+    const int ox = grid.lx().offset, oy = grid.ly().offset;
+    auto owned = [&](int i, int j) { return i >= 0 && i < grid.nx() && j >= 0 && j < grid.ny(); };
+    std::vector<SideCell> out;
+    for (const bool top : {false, true}) {  // segments along x, the fluid row below / above; u is tangential
+        const int gj = top ? hole.upper[1] : hole.lower[1] - 1;
+        const double wall = Y.line(top ? hole.upper[1] : hole.lower[1]);
+        for (int gi = hole.lower[0]; gi < hole.upper[0]; ++gi) {
+            const int i = gi - ox, j = gj - oy;
+            if (!owned(i, j)) continue;
+            const double u = 0.5 * (vel.u(i, j) + vel.u(i + 1, j)) - hole.velocity[0];
+            out.push_back({i, j, Vec2(0.0, top ? 1.0 : -1.0), Vec2(X.centre(gi), wall), 0.5 * Y.width(gj), X.width(gi),
+                           Vec2(u, 0.0)});
+        }
+    }
+    for (const bool right : {false, true}) {  // segments along y, the fluid column left / right; v is tangential
+        const int gi = right ? hole.upper[0] : hole.lower[0] - 1;
+        const double wall = X.line(right ? hole.upper[0] : hole.lower[0]);
+        for (int gj = hole.lower[1]; gj < hole.upper[1]; ++gj) {
+            const int i = gi - ox, j = gj - oy;
+            if (!owned(i, j)) continue;
+            const double v = 0.5 * (vel.v(i, j) + vel.v(i, j + 1)) - hole.velocity[1];
+            out.push_back({i, j, Vec2(right ? 1.0 : -1.0, 0.0), Vec2(wall, Y.centre(gj)), 0.5 * X.width(gi),
+                           Y.width(gj), Vec2(0.0, v)});
+        }
+    }
+    return out;
+}
+
 }  // namespace chute
