@@ -26,9 +26,21 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
                 throw std::invalid_argument(key + ".type: one body_fitted body moves, and the grid with it; bodies." +
                                             bodies_[carrying_].name() + " already does");
             carrying_ = static_cast<int>(k);
-            refuse_walls_across_motion(body);
+            if (!body.config().layers) refuse_walls_across_motion(body);
         }
         blocks.push_back(hole_of(body, grid_));
+        if (body.moves() && body.config().layers)
+            for (int axis = 0; axis < 2; ++axis) {
+                if (!moves_along(body, axis)) continue;
+                const Axis& a = axis == 0 ? grid_.x_axis() : grid_.y_axis();
+                if (a.periodic())
+                    throw std::invalid_argument("bodies." + body.name() +
+                                                ".grid_motion: layers need a domain that is not periodic along the "
+                                                "motion (boundaries." +
+                                                (axis == 0 ? "left" : "bottom") + ".type)");
+                layers_[axis].emplace(a.lines(), body.state().centre[axis], blocks.back().lower[axis],
+                                      blocks.back().upper[axis], "bodies." + body.name() + ".grid_motion");
+            }
         const SolidBlock& b = blocks.back();
         double h = 1e300;
         for (int k = b.lower[0]; k < b.upper[0]; ++k) h = std::min(h, grid_.x_axis().width(k));
@@ -50,14 +62,16 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
 
 // The grid moves with the body along the axes it moves along (a free body's unlocked ones, a prescribed body's
 // with a velocity, amplitude or acceleration there): the boundaries across them would move too.
-void BodyFitted::refuse_walls_across_motion(const Body& body) const {
+bool BodyFitted::moves_along(const Body& body, int axis) const {
     const MotionConfig& m = body.config().motion;
+    return body.free() ? !m.locked[axis]
+                       : m.velocity[axis] != 0.0 || m.amplitude[axis] != 0.0 || m.acceleration[axis] != 0.0;
+}
+
+void BodyFitted::refuse_walls_across_motion(const Body& body) const {
     static const char* const side_names[4] = {"left", "right", "bottom", "top"};
     for (int axis = 0; axis < 2; ++axis) {
-        const bool moves = body.free()
-                               ? !m.locked[axis]
-                               : m.velocity[axis] != 0.0 || m.amplitude[axis] != 0.0 || m.acceleration[axis] != 0.0;
-        if (!moves) continue;
+        if (!moves_along(body, axis)) continue;
         for (int s = 2 * axis; s < 2 * axis + 2; ++s) {
             const BoundaryType type = settings_.boundaries[s];
             if (type != BoundaryType::wall && type != BoundaryType::slip) continue;
@@ -77,6 +91,7 @@ void BodyFitted::attach(FlowSolver& flow) {
     if (carrying_ < 0 || !bodies_[carrying_].free()) return;
     response_ = flow_->hole_response(static_cast<std::size_t>(carrying_));
     const SolidBlock& block = solid_.blocks()[carrying_];
+    added_mass_.setZero();
     const double rd = settings_.density * settings_.depth;
     for (int k = 0; k < 2; ++k) {
         const std::array<double, 2> push = flow_->solid_gradient_sum(block, response_->pressure[k]);
@@ -88,6 +103,23 @@ void BodyFitted::attach(FlowSolver& flow) {
 void BodyFitted::follow() {
     if (carrying_ < 0) return;
     const BodyState& s = bodies_[carrying_].state();
+    if (layers_[0] || layers_[1]) {
+        // The rigid zones where the body is, the modifiers stretched; the lines along an axis without layers stay.
+        std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
+        GridMotion motion;
+        if (layers_[0]) {
+            x = layers_[0]->stretched(x, s.centre.x());
+            motion.axis[0] = {layers_[0]->first(), layers_[0]->last(), s.velocity.x()};
+        }
+        if (layers_[1]) {
+            y = layers_[1]->stretched(y, s.centre.y());
+            motion.axis[1] = {layers_[1]->first(), layers_[1]->last(), s.velocity.y()};
+        }
+        if (x != grid_.x_axis().lines() || y != grid_.y_axis().lines()) flow_->stretch_grid_lines(x, y);
+        flow_->set_grid_motion(motion);
+        solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
+        return;
+    }
     // Where the block's cells are now: the grid moves by what separates them from the body.
     const SolidBlock& block = solid_.blocks()[carrying_];
     const Axis& X = grid_.x_axis();
@@ -98,6 +130,47 @@ void BodyFitted::follow() {
     if (shift.x() != 0.0 || shift.y() != 0.0) flow_->translate_grid(shift.x(), shift.y());
     flow_->set_frame_velocity({s.velocity.x(), s.velocity.y()});
     solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
+}
+
+void BodyFitted::begin_step(const Velocity&) {
+    if (!layers_[0] && !layers_[1]) return;
+    const BodyState& s = bodies_[carrying_].state();
+    std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
+    bool changed = false;
+    if (layers_[0])
+        if (auto lines = layers_[0]->change(x, s.velocity.x())) x = std::move(*lines), changed = true;
+    if (layers_[1])
+        if (auto lines = layers_[1]->change(y, s.velocity.y())) y = std::move(*lines), changed = true;
+    if (!changed) return;
+    flow_->change_grid_lines(std::move(x), std::move(y));
+    holes_found_again();
+    change_energy_ = flow_->project_after_change();
+    follow();
+}
+
+// The lines changed under the blocks: their cells are found again (the rigid zone was renumbered), the solver
+// leaves the new ones out, and a free body's response to its velocity is computed on the new grid.
+void BodyFitted::holes_found_again() {
+    std::vector<SolidBlock> blocks;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        blocks.push_back(hole_of(bodies_[k], grid_));
+        blocks.back().velocity = solid_.blocks()[k].velocity;
+    }
+    solid_.set(std::move(blocks));
+    flow_->set_solid_cells(&solid_);
+    if (response_) attach(*flow_);
+}
+
+void BodyFitted::restored() {
+    if (!layers_[0] && !layers_[1]) return;
+    const BodyState& s = bodies_[carrying_].state();
+    if (layers_[0]) layers_[0]->locate(grid_.x_axis().lines(), s.centre.x());
+    if (layers_[1]) layers_[1]->locate(grid_.y_axis().lines(), s.centre.y());
+    holes_found_again();
+}
+
+std::array<int, 2> BodyFitted::layer_changes() const {
+    return {layers_[0] ? layers_[0]->changes() : 0, layers_[1] ? layers_[1]->changes() : 0};
 }
 
 void BodyFitted::place(double t) {

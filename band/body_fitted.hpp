@@ -9,7 +9,10 @@
 // They differ by the staggered grid's half cell beside each side: the normal-momentum cells end half a cell
 // from the side, where (a) takes the convective and normal viscous fluxes and (b) the wall's zero.
 //
-// A body that moves carries the whole grid with it (ALE: the grid translates rigidly at the body's velocity,
+// A body that moves carries the grid with it. With grid_motion `layers` (band/layers.hpp) only the lines of a rigid
+// zone around it move, the lines beyond stay and the layer between stretches, a layer moving from ahead of the
+// block to behind it when the one ahead gets too thin: the domain and its walls stay put. With `translate`
+// it carries the whole grid (ALE: the grid translates rigidly at the body's velocity,
 // the convective fluxes are relative to it, and the domain's boundaries keep the conditions of the inertial
 // frame: water at rest ahead of the block, an outflow behind), as the study's body-fitted OpenFOAM runs of a fall
 // do. So the boundaries across an axis the body moves along cannot be walls (they would move with it); the
@@ -28,6 +31,7 @@
 #include <vector>
 
 #include "carrier.hpp"
+#include "layers.hpp"
 #include "solid_cells.hpp"
 
 namespace chute {
@@ -45,7 +49,9 @@ public:
     const std::vector<Body>& bodies() const override { return bodies_; }
     double cell_size(std::size_t b) const override { return cell_size_[b]; }
 
-    void begin_step(const Velocity&) override {}
+    // With modifier layers: a layer moved from ahead of the block to behind it where a modifier reached its
+    // threshold (band/layers.hpp), the flow remapped and projected once.
+    void begin_step(const Velocity&) override;
     void place(double t) override;
     // The hole's faces are filled by the flow solver, whenever it fills the domain's boundaries.
     void impose(Velocity&, double) override {}
@@ -60,6 +66,12 @@ public:
 
     const SolidCells* solid_cells() const override { return &solid_; }
     void attach(FlowSolver& flow) override;
+    void restored() override;
+
+    // The layer changes so far along x and y, and the kinetic energy of the flow before and after the projection
+    // that followed the last one (m^4/s^2 per unit density and depth).
+    std::array<int, 2> layer_changes() const;
+    std::array<double, 2> last_change_energy() const { return change_energy_; }
 
 private:
     const Grid& grid_;
@@ -76,6 +88,11 @@ private:
     // body is.
     void follow();
     void refuse_walls_across_motion(const Body& body) const;
+    bool moves_along(const Body& body, int axis) const;
+    // The modifier layers along the axes the carrying body moves along (grid_motion: layers).
+    std::array<std::optional<AxisLayers>, 2> layers_;
+    std::array<double, 2> change_energy_{};
+    void holes_found_again();  // after the lines changed: the blocks' cells, the solver's and the response
 };
 
 }  // namespace chute

@@ -39,6 +39,7 @@ struct BodyConfig {
     double density = 0.0;                                     // kg/m^3, free bodies
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
     CarrierKind carrier = CarrierKind::immersed;
+    bool layers = false;  // body_fitted: the grid follows with modifier layers (band/layers.hpp), not translating
 };
 
 // Where a body is at the start, for the check that it lies in the domain (run/case_file.cpp): the key that

@@ -91,8 +91,21 @@ std::vector<CaseKey> body_keys() {
          .choices = {"immersed", "body_fitted"},
          .meaning = "How the flow carries the body (docs/design.md): `immersed`, markers and forcing on the fixed "
                     "grid; `body_fitted`, a hole in the grid (an unrotated rectangle whose sides lie on grid lines; "
-                    "fixed, or translating with the whole grid carried along; not free in this version). Every "
+                    "fixed, or moving, prescribed or free with its rotation locked, the grid carried along). Every "
                     "body of a run is carried the same way."},
+        {.path = "bodies.<body>.grid_motion",
+         .type = K::choice,
+         .default_value = "translate",
+         .choices = {"translate", "layers"},
+         .when_key = "carrier",
+         .when_values = {"body_fitted"},
+         .meaning = "How the grid follows a moving body_fitted body: `translate`, the whole grid moves with it (the "
+                    "domain's boundaries too: no walls across its motion); `layers`, the lines around it (its window "
+                    "and their growth up to the far-field width) move with it, the lines beyond stay, and the layer "
+                    "of cells between them on each side stretches and is added or removed as the body goes (the "
+                    "study's mesh modifiers, band/layers.hpp): the domain and its walls stay put, and the body can "
+                    "travel any distance the domain holds. `layers` needs cells of the far-field width (spacing "
+                    "clustered with `max`) between the window and the domain's ends."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "
@@ -254,6 +267,8 @@ std::vector<BodyConfig> read_bodies(const CaseReader& r, double plane_reference_
                                                      {"segment", BodyShape::segment}});
         b.carrier = r.choice<CarrierKind>(
             p + ".carrier", {{"immersed", CarrierKind::immersed}, {"body_fitted", CarrierKind::body_fitted}});
+        if (b.carrier == CarrierKind::body_fitted)
+            b.layers = r.choice<bool>(p + ".grid_motion", {{"translate", false}, {"layers", true}});
         const bool closed =
             b.shape == BodyShape::circle || b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon;
         // The height: the extent across x, the default reference length.

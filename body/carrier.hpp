@@ -86,6 +86,9 @@ public:
     // The flow the bodies are carried through, handed once after both are built (after the solver took the
     // solid cells): a carrier that reads the solver's fluxes, or moves its grid with a body, keeps it.
     virtual void attach(FlowSolver&) {}
+    // After a checkpoint restored the grid's lines and the bodies' states (run/restart_state.cpp), before place():
+    // a carrier whose cells follow the lines (a body-fitted grid with modifier layers) finds them again.
+    virtual void restored() {}
 };
 
 }  // namespace chute

@@ -8,7 +8,9 @@
 
 #include "convection.hpp"
 #include "diffusion.hpp"
+#include "diagnostics.hpp"
 #include "projection.hpp"
+#include "remap.hpp"
 #include "time_step_control.hpp"
 
 namespace chute {
@@ -237,9 +239,18 @@ void FlowSolver::translate_grid(double dx, double dy) {
     grid_->set_lines(std::move(x), std::move(y));
 }
 
-void FlowSolver::set_frame_velocity(std::array<double, 2> w) {
-    frame_ = w;
-    bc_->set_frame_velocity(w);
+void FlowSolver::set_grid_motion(const GridMotion& motion) {
+    motion_ = motion;
+    lines_ = LineVelocities(*grid_, motion_);
+    // The boundaries move with their own lines: the inflow and outflow conditions are those of the inertial frame
+    // seen from there (at rest when the lines between the moving zone and the boundaries stretch).
+    bc_->set_frame_velocity({motion_.axis[0].at(0), motion_.axis[1].at(0)});
+}
+
+void FlowSolver::stretch_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
+    grid_->set_lines(std::move(x_lines), std::move(y_lines));
+    inverse_h2_max_ = max_inverse_square_spacing(*grid_);
+    poisson_->update_coefficients();
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
@@ -263,12 +274,48 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
     pressure_history_ = false;
 }
 
+void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
+    // The fields remapped, each with where it lives along x and y (on the axis's lines or at cell centres).
+    struct Remapped {
+        Field2D* field;
+        bool on_x_lines, on_y_lines;
+    };
+    std::vector<Remapped> fields = {{&vel_.u, true, false},       {&vel_.v, false, true},
+                                    {&rhs_old_.u, true, false},   {&rhs_old_.v, false, true},
+                                    {&p_, false, false},          {&p_old_, false, false},
+                                    {&eddy_.cell, false, false},  {&eddy_.corner, true, true}};
+    for (Field2D* f : remapped_) fields.push_back({f, false, false});
+    for (const Remapped& r : fields) halo_->exchange(*r.field);
+    std::vector<double> x_before = grid_->x_axis().lines(), y_before = grid_->y_axis().lines();
+    const bool x_changed = x_lines != x_before, y_changed = y_lines != y_before;
+    if (x_changed) {
+        grid_->set_lines(std::move(x_lines), y_before);
+        for (const Remapped& r : fields) remap_along_axis(*grid_, 0, x_before, r.on_x_lines, *r.field);
+        if (y_changed)
+            for (const Remapped& r : fields) halo_->exchange(*r.field);
+    }
+    if (y_changed) {
+        grid_->set_lines(grid_->x_axis().lines(), std::move(y_lines));
+        for (const Remapped& r : fields) remap_along_axis(*grid_, 1, y_before, r.on_y_lines, *r.field);
+    }
+    for (const Remapped& r : fields) halo_->exchange(*r.field);
+    inverse_h2_max_ = max_inverse_square_spacing(*grid_);
+    poisson_->update_matrix();
+    refresh_ghosts();
+}
+
+std::array<double, 2> FlowSolver::project_after_change() {
+    const double before = kinetic_energy(*grid_, vel_, fluid_cells());
+    project_start();
+    return {before, kinetic_energy(*grid_, vel_, fluid_cells())};
+}
+
 double FlowSolver::next_dt() const {
     if (config_.fixed_dt) return *config_.fixed_dt;
     const bool cfl_only = config_.diffusion == DiffusionScheme::implicit_euler ||
                           (config_.diffusion == DiffusionScheme::automatic && eddy_on_);
     const double nu = cfl_only ? 0.0 : config_.viscosity + (eddy_on_ ? eddy_.max : 0.0);
-    const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number, frame_);
+    const auto limits = time_step_limits(*grid_, vel_, nu, config_.cfl, config_.diffusion_number, line_velocities());
     return std::min(limits.stable(), config_.max_dt);
 }
 
@@ -294,7 +341,7 @@ bool FlowSolver::implicit_step(double dt) const {
 }
 
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
-    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, frame_);
+    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, line_velocities());
     if (implicit_now_)
         add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else if (eddy_on_)

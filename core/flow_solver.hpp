@@ -25,6 +25,7 @@
 #include "boundary_conditions.hpp"
 #include "field.hpp"
 #include "flow_config.hpp"
+#include "grid_motion.hpp"
 #include "halo_exchange.hpp"
 #include "implicit_diffusion.hpp"
 #include "poisson_solver.hpp"
@@ -132,11 +133,33 @@ public:
     // as the grid's velocity, which the convective fluxes and the step's limit see relative to it
     // (core/operators/convection.hpp). Spacings do not change, so neither does the Poisson matrix.
     void translate_grid(double dx, double dy);
-    void set_frame_velocity(std::array<double, 2> w);
-    std::array<double, 2> frame_velocity() const { return frame_; }
+    void set_frame_velocity(std::array<double, 2> w) {
+        set_grid_motion({{AxisMotion::whole(w[0]), AxisMotion::whole(w[1])}});
+    }
+    // Lines that move at their own velocities (core/grid/grid_motion.hpp): the fluxes and the step's limit see the
+    // velocity relative to each face, and the domain's boundaries the velocity of their own lines.
+    void set_grid_motion(const GridMotion& motion);
+    const GridMotion& grid_motion() const { return motion_; }
+    const LineVelocities* line_velocities() const { return lines_.zero() ? nullptr : &lines_; }
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt (the matrix is kept when the
     // spacings are the same to round-off: a translated grid).
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // Move grid lines within a step (same counts, the same cells: a modifier layer stretching): the geometry and
+    // the Poisson matrix's coefficients follow, the multigrid hierarchy and the pressure history are kept.
+    void stretch_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // A topology change between steps (band/layers.hpp: a layer of cells added on one side of a moving zone and
+    // one removed on the other; the same counts): the lines replaced, and the velocity, the pressures, the AB2
+    // history, the eddy viscosity and every field handed to remap_with_grid() remapped conservatively
+    // (core/grid/remap.hpp). Rebuilds the Poisson matrix. The remapped velocity is not divergence-free on the new
+    // cells: after the solid cells are set again, project_after_change() projects it. Collective.
+    void change_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // Fields of another model that change_grid_lines() remaps with the flow's (cell-centred, ghosts exchanged
+    // here): the turbulence model's k and epsilon. The field must outlive the solver.
+    void remap_with_grid(Field2D* field) { remapped_.push_back(field); }
+    // Project the velocity once on the changed grid (OpenFOAM's correctPhi after a topology change): u -= grad
+    // phi, laplacian phi = div u; the pressure stays. Returns the kinetic energy (m^4/s^2 per unit density and
+    // depth, fluid cells) before and after. Collective.
+    std::array<double, 2> project_after_change();
     void refresh_ghosts();
     // Time the stages of a step into `timer` (null: no timing): "momentum" (prediction with its boundary
     // conditions), "poisson" (right-hand side and hypre solve), "correction" (gradient, halo exchange).
@@ -173,7 +196,9 @@ private:
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
     double weight_new_ = 1.0, weight_old_ = 0.0;        // the last step's AB2 weights of H^n and H^{n-1}
-    std::array<double, 2> frame_{};                     // the grid's velocity (translate_grid)
+    GridMotion motion_;                                 // how the grid's lines move (translate_grid, band/)
+    LineVelocities lines_;                              // and their velocities on this patch
+    std::vector<Field2D*> remapped_;                    // other models' fields that follow topology changes
     std::vector<std::array<double, 2>> implicit_wall_;  // per solid block: this rank's sum of V L_implicit(u*)
 };
 

@@ -20,14 +20,16 @@ double max_inverse_square_spacing(const Grid& grid) {
 }
 
 TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number,
-                                std::array<double, 2> frame) {
+                                const LineVelocities* lines) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     double rate[2] = {0.0, 0.0};  // max convective rate |u|/dx + |v|/dy, max diffusive rate
     for (int j = 0; j < grid.ny(); ++j)
         for (int i = 0; i < grid.nx(); ++i) {
-            const double uc = std::max(std::abs(vel.u(i, j) - frame[0]), std::abs(vel.u(i + 1, j) - frame[0]));
-            const double vc = std::max(std::abs(vel.v(i, j) - frame[1]), std::abs(vel.v(i, j + 1) - frame[1]));
+            const double w0 = lines ? lines->x(i) : 0.0, w1 = lines ? lines->x(i + 1) : 0.0;
+            const double s0 = lines ? lines->y(j) : 0.0, s1 = lines ? lines->y(j + 1) : 0.0;
+            const double uc = std::max(std::abs(vel.u(i, j) - w0), std::abs(vel.u(i + 1, j) - w1));
+            const double vc = std::max(std::abs(vel.v(i, j) - s0), std::abs(vel.v(i, j + 1) - s1));
             const double ix = 1.0 / X.w(i), iy = 1.0 / Y.w(j);
             rate[0] = std::max(rate[0], uc * ix + vc * iy);
             rate[1] = std::max(rate[1], nu * (ix * ix + iy * iy));

@@ -1,10 +1,10 @@
 #pragma once
-#include <array>
 // Adaptive time step for the explicit (Adams-Bashforth 2) momentum update:
 //   convection:  dt <= cfl / max(|u|/dx + |v|/dy)
 //   diffusion:   dt <= d / (nu (1/dx^2 + 1/dy^2)); AB2 is stable for real eigenvalues down to
 //                lambda dt = -1, and the 5-point Laplacian's is -4 nu (1/dx^2 + 1/dy^2), so d <= 1/4.
 #include "field.hpp"
+#include "grid_motion.hpp"
 
 namespace chute {
 
@@ -18,8 +18,9 @@ struct TimeStepLimits {
 double max_inverse_square_spacing(const Grid& grid);
 
 // Global (all ranks) limits for the current velocity.
-// `frame`: the grid's velocity (a translating body-fitted grid); the convective limit takes |u - w|.
+// `lines`: the velocities of moving grid lines (a body-fitted grid, core/grid/grid_motion.hpp); the convective
+// limit takes |u - w| at each face.
 TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number,
-                                std::array<double, 2> frame = {0.0, 0.0});
+                                const LineVelocities* lines = nullptr);
 
 }  // namespace chute

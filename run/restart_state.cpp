@@ -66,6 +66,7 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
     solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
     model.free_bodies().restore(checkpoint);
+    model.carrier().restored();
     model.carrier().place(solver.time());
     solver.refresh_ghosts();  // a hole's faces move with its restored body
     if (KEpsilon* turbulence = model.turbulence()) turbulence->restored();

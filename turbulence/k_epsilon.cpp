@@ -47,6 +47,8 @@ KEpsilon::KEpsilon(const KEpsilonSettings& settings, FlowSolver& flow, Carrier& 
     eps_floor_ = 1e-10 * eps_in_;
     k_ = eps_ = model_nu_t_ = P_ = tk_ = te_ = Field2D(grid_);
     was_fluid_ = Field2D(grid_, 1.0);
+    // A body-fitted grid's topology changes (band/layers.hpp) carry them along with the flow's fields.
+    for (Field2D* f : {&k_, &eps_, &model_nu_t_, &was_fluid_}) flow_.remap_with_grid(f);
     set_initial_condition();
 }
 
@@ -203,7 +205,7 @@ void KEpsilon::update(double dt) {
             set_ghosts(eps_, &eps_in_);
         }
         scalar_transport(grid_, flow_.velocity(), model_nu_t_, nu, fluid,
-                         {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}}, flow_.frame_velocity());
+                         {{&k_, C::sigma_k, &tk_}, {&eps_, C::sigma_eps, &te_}}, flow_.line_velocities());
         for (int j = 0; j < grid_.ny(); ++j)
             for (int i = 0; i < grid_.nx(); ++i) {
                 if (fluid(i, j) == 0.0) continue;

@@ -21,7 +21,7 @@ struct FaceFlux {
 }  // namespace
 
 void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& nu_t, double nu, const Field2D& fluid,
-                      const std::vector<TransportedScalar>& scalars, std::array<double, 2> frame) {
+                      const std::vector<TransportedScalar>& scalars, const LineVelocities* lines) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     const int nx = grid.nx(), ny = grid.ny();
@@ -44,14 +44,14 @@ void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& nu_t
     };
     std::vector<FaceFlux> south(nx), north(nx), west(nx + 1);
     auto y_face = [&](int i, int j) {  // face j of column i: between cells (i, j-1) and (i, j)
-        return face(vel.v(i, j) - frame[1], X.w(i), (Y.f(j) - Y.c(j - 1)) / Y.dc(j), Y.dc(j),
+        return face(vel.v(i, j) - (lines ? lines->y(j) : 0.0), X.w(i), (Y.f(j) - Y.c(j - 1)) / Y.dc(j), Y.dc(j),
                     fluid(i, j - 1) != 0.0 && fluid(i, j) != 0.0, 0.5 * (nu_t(i, j - 1) + nu_t(i, j)),
                     [&](const Field2D& p, int k) { return p(i, j - 1 + k); });
     };
     for (int i = 0; i < nx; ++i) south[i] = y_face(i, 0);
     for (int j = 0; j < ny; ++j) {
         for (int i = 0; i <= nx; ++i)  // face i of row j: between cells (i-1, j) and (i, j)
-            west[i] = face(vel.u(i, j) - frame[0], Y.w(j), (X.f(i) - X.c(i - 1)) / X.dc(i), X.dc(i),
+            west[i] = face(vel.u(i, j) - (lines ? lines->x(i) : 0.0), Y.w(j), (X.f(i) - X.c(i - 1)) / X.dc(i), X.dc(i),
                            fluid(i - 1, j) != 0.0 && fluid(i, j) != 0.0, 0.5 * (nu_t(i - 1, j) + nu_t(i, j)),
                            [&](const Field2D& p, int k) { return p(i - 1 + k, j); });
         for (int i = 0; i < nx; ++i) north[i] = y_face(i, j + 1);

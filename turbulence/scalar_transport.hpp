@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "field.hpp"
+#include "grid_motion.hpp"
 
 namespace chute {
 
@@ -23,9 +24,11 @@ struct TransportedScalar {
     Field2D* out;        // T(phi) on owned cells (0 in solid cells)
 };
 
-// nu_t and fluid need valid ghosts. `frame`: the grid's velocity (a grid carried by a body-fitted block): the
-// scalars are carried by the velocity relative to the grid, as the momentum is (core/operators/convection.hpp).
+// nu_t and fluid need valid ghosts. `lines`: the velocities of moving grid lines (a grid carried by a body-fitted
+// block, core/grid/grid_motion.hpp): the scalars are carried by the velocity relative to each face, as the momentum
+// is (core/operators/convection.hpp); the advective form (phi_P times the net outflow) is the geometric
+// conservation law's term where cells stretch.
 void scalar_transport(const Grid& grid, const Velocity& vel, const Field2D& nu_t, double nu, const Field2D& fluid,
-                      const std::vector<TransportedScalar>& scalars, std::array<double, 2> frame = {0.0, 0.0});
+                      const std::vector<TransportedScalar>& scalars, const LineVelocities* lines = nullptr);
 
 }  // namespace chute

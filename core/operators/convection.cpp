@@ -9,9 +9,15 @@ namespace chute {
 
 namespace {
 
-template <ConvectionScheme S>
-void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out, double wx,
-                     double wy) {
+// Moving: the lines move (lv); the fluxes take the velocity relative to each face and the geometric conservation
+// law's term -phi_P (sum_f w_f A_f) / V keeps a uniform field uniform where cells stretch.
+template <ConvectionScheme S, bool Moving>
+void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out,
+                     const LineVelocities* lv) {
+    const auto wx_line = [&](int i) { return Moving ? lv->x(i) : 0.0; };
+    const auto wy_line = [&](int j) { return Moving ? lv->y(j) : 0.0; };
+    const auto wx_centre = [&](int i) { return Moving ? lv->xc(i) : 0.0; };
+    const auto wy_centre = [&](int j) { return Moving ? lv->yc(j) : 0.0; };
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     const int nx = grid.nx(), ny = grid.ny();
@@ -24,36 +30,44 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
         // weights for interpolating u to y-lines yf(j) and yf(j+1)
         const double wn = (Y.f(j + 1) - Y.c(j)) / Y.dc(j + 1);
         const double ws = (Y.f(j) - Y.c(j - 1)) / Y.dc(j);
+        const double wyn = wy_line(j + 1), wys = wy_line(j);
         for (int i = u_first; i < nx; ++i) {
             // east/west faces are cell centres i and i-1: U = mean of the two faces, value at the midpoint.
-            const double Ue = 0.5 * (u(i, j) + u(i + 1, j)) - wx;
-            const double Uw = 0.5 * (u(i - 1, j) + u(i, j)) - wx;
+            const double wxe = wx_centre(i), wxw = wx_centre(i - 1);
+            const double Ue = 0.5 * (u(i, j) + u(i + 1, j)) - wxe;
+            const double Uw = 0.5 * (u(i - 1, j) + u(i, j)) - wxw;
             const double fe = Ue * transported<S>(Ue, u(i - 1, j), u(i, j), u(i + 1, j), u(i + 2, j), 0.5);
             const double fw = Uw * transported<S>(Uw, u(i - 2, j), u(i - 1, j), u(i, j), u(i + 1, j), 0.5);
             // north/south faces: the volume flux through [xc(i-1), xc(i)] splits into the two cells' v faces.
             const double a0 = (X.f(i) - X.c(i - 1)) / X.dc(i), a1 = 1.0 - a0;
-            const double Vn = a0 * v(i - 1, j + 1) + a1 * v(i, j + 1) - wy;
-            const double Vs = a0 * v(i - 1, j) + a1 * v(i, j) - wy;
+            const double Vn = a0 * v(i - 1, j + 1) + a1 * v(i, j + 1) - wyn;
+            const double Vs = a0 * v(i - 1, j) + a1 * v(i, j) - wys;
             const double fn = Vn * transported<S>(Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
             const double fs = Vs * transported<S>(Vs, u(i, j - 2), u(i, j - 1), u(i, j), u(i, j + 1), ws);
-            out.u(i, j) = -((fe - fw) / X.dc(i) + (fn - fs) / hy);
+            double c = (fe - fw) / X.dc(i) + (fn - fs) / hy;
+            if (Moving) c += u(i, j) * ((wxe - wxw) / X.dc(i) + (wyn - wys) / hy);
+            out.u(i, j) = -c;
         }
     }
     // v momentum
     for (int j = v_first; j < ny; ++j) {
         const double b0 = (Y.f(j) - Y.c(j - 1)) / Y.dc(j), b1 = 1.0 - b0;
+        const double wyn = wy_centre(j), wys = wy_centre(j - 1);
         for (int i = 0; i < nx; ++i) {
-            const double Vn = 0.5 * (v(i, j) + v(i, j + 1)) - wy;
-            const double Vs = 0.5 * (v(i, j - 1) + v(i, j)) - wy;
+            const double Vn = 0.5 * (v(i, j) + v(i, j + 1)) - wyn;
+            const double Vs = 0.5 * (v(i, j - 1) + v(i, j)) - wys;
             const double fn = Vn * transported<S>(Vn, v(i, j - 1), v(i, j), v(i, j + 1), v(i, j + 2), 0.5);
             const double fs = Vs * transported<S>(Vs, v(i, j - 2), v(i, j - 1), v(i, j), v(i, j + 1), 0.5);
-            const double Ue = b0 * u(i + 1, j - 1) + b1 * u(i + 1, j) - wx;
-            const double Uw = b0 * u(i, j - 1) + b1 * u(i, j) - wx;
+            const double wxe = wx_line(i + 1), wxw = wx_line(i);
+            const double Ue = b0 * u(i + 1, j - 1) + b1 * u(i + 1, j) - wxe;
+            const double Uw = b0 * u(i, j - 1) + b1 * u(i, j) - wxw;
             const double we = (X.f(i + 1) - X.c(i)) / X.dc(i + 1);
             const double ww = (X.f(i) - X.c(i - 1)) / X.dc(i);
             const double fe = Ue * transported<S>(Ue, v(i - 1, j), v(i, j), v(i + 1, j), v(i + 2, j), we);
             const double fw = Uw * transported<S>(Uw, v(i - 2, j), v(i - 1, j), v(i, j), v(i + 1, j), ww);
-            out.v(i, j) = -((fe - fw) / X.w(i) + (fn - fs) / Y.dc(j));
+            double c = (fe - fw) / X.w(i) + (fn - fs) / Y.dc(j);
+            if (Moving) c += v(i, j) * ((wxe - wxw) / X.w(i) + (wyn - wys) / Y.dc(j));
+            out.v(i, j) = -c;
         }
     }
 }
@@ -61,15 +75,21 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
 }  // namespace
 
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                std::array<double, 2> frame) {
-    const double wx = frame[0], wy = frame[1];
+                const LineVelocities* lines) {
+    const bool moving = lines && !lines->zero();
+    const auto run = [&]<ConvectionScheme S>() {
+        if (moving)
+            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines);
+        else
+            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr);
+    };
     switch (scheme) {
         case ConvectionScheme::central:
-            return convection_impl<ConvectionScheme::central>(grid, vel, u_first, v_first, out, wx, wy);
+            return run.template operator()<ConvectionScheme::central>();
         case ConvectionScheme::van_leer:
-            return convection_impl<ConvectionScheme::van_leer>(grid, vel, u_first, v_first, out, wx, wy);
+            return run.template operator()<ConvectionScheme::van_leer>();
         case ConvectionScheme::koren:
-            return convection_impl<ConvectionScheme::koren>(grid, vel, u_first, v_first, out, wx, wy);
+            return run.template operator()<ConvectionScheme::koren>();
     }
 }
 

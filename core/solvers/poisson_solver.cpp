@@ -114,7 +114,8 @@ void PoissonSolver::destroy_solver() {
     pcg_ = pfmg_ = nullptr;
 }
 
-void PoissonSolver::update_matrix() {
+// The coefficients of -V laplacian on this rank's cells (5 per cell: diagonal, west, east, south, north).
+std::vector<double> PoissonSolver::matrix_values() const {
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     const int nx = grid_.nx(), ny = grid_.ny();
@@ -156,6 +157,19 @@ void PoissonSolver::update_matrix() {
             v[3] = -s;
             v[4] = -n;
         }
+    return values;
+}
+
+void PoissonSolver::update_coefficients() {
+    if (!matrix_) return update_matrix();
+    std::vector<double> values = matrix_values();
+    int entries[5] = {0, 1, 2, 3, 4};
+    HYPRE_StructMatrixSetBoxValues(matrix_, lower_.data(), upper_.data(), 5, entries, values.data());
+    HYPRE_StructMatrixAssemble(matrix_);
+}
+
+void PoissonSolver::update_matrix() {
+    std::vector<double> values = matrix_values();
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
     HYPRE_StructMatrixCreate(grid_.comm(), hgrid_, stencil_, &matrix_);
     HYPRE_StructMatrixSetSymmetric(matrix_, 1);  // stores 3 of the 5 coefficients: less to read per iteration

@@ -37,6 +37,9 @@ public:
 
     // Rebuild the matrix and the multigrid hierarchy (after grid lines moved).
     void update_matrix();
+    // Only the matrix's coefficients (after lines moved a little: a modifier layer stretching within a step); the
+    // multigrid hierarchy stays that of the last update_matrix(), a preconditioner of a nearby matrix.
+    void update_coefficients();
     // Leave the cells where `fluid` is 0 out of the problem (null: none); `fluid_cells` counts the others over
     // all ranks. Rebuilds the matrix; the field must outlive the solver or the next call.
     void set_fluid_cells(const Field2D* fluid, long long fluid_cells);
@@ -47,6 +50,7 @@ public:
 
 private:
     void destroy_solver();
+    std::vector<double> matrix_values() const;
 
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;

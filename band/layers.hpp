@@ -1,0 +1,55 @@
+#pragma once
+// The mesh modifiers of a body-fitted block along one axis (Turmel & Locat 2008, sec. 3.3 and Fig. 1: the
+// layers of cells that absorb the block's motion; OpenFOAM's layerAdditionRemoval): the lines around the block
+// form a rigid zone that moves with it, the lines beyond are fixed (the domain's boundaries and walls stay put),
+// and the one cell between the rigid zone and the fixed lines on each side (the modifier layer) stretches or
+// shrinks with the motion.
+//
+//     fixed lines ... | lower modifier | rigid zone (the block, its clustered window) | upper modifier | ... fixed
+//
+// The fixed cells next to the rigid zone have the far-field width H of their side. When the shrinking modifier
+// is thinner than H / 3 (it shrinks: the block moves towards it), it merges with the fixed cell beyond it (a
+// line removed), and the growing one on the other side, then 5/3 H thick, gets a line at H from its fixed line
+// (a line added): a layer moves from ahead of the block to behind it, and the cell count stays the same. At
+// most one change per step and axis; the thresholds leave a hysteresis of H / 3 either way, so a block that
+// turns back does not trigger the reverse change at once. The rigid zone is never remapped (its cells are only
+// renumbered); the two modifiers are (core/grid/remap.hpp).
+//
+// The rigid zone is the block's window and its growth up to the far-field width: the lines from the innermost
+// cell of width H (to 1e-9) on each side, H the width of the outermost cell on that side (`domain.<axis>.max`
+// with spacing clustered gives such a grid).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chute {
+
+class AxisLayers {
+public:
+    // `lines` of the axis, the block's centre on it, and the block's cells [hole_lower, hole_upper).
+    // std::invalid_argument naming `key` when the grid has no fixed cells on a side.
+    AxisLayers(const std::vector<double>& lines, double centre, int hole_lower, int hole_upper, const std::string& key);
+
+    int first() const { return first_; }  // the rigid zone's lines [first, last] (global indices)
+    int last() const { return last_; }
+    // The lines with the rigid zone centred on `centre` (the modifiers stretched). RunFailure when a modifier
+    // would vanish (the block moved more than a layer in one step).
+    std::vector<double> stretched(const std::vector<double>& lines, double centre) const;
+    // The lines after a layer moved from ahead of the block to behind it, when the shrinking modifier is under its
+    // threshold (`velocity`: the block's along the axis, whose sign says which one shrinks); nullopt otherwise.
+    // The rigid zone's indices follow (first(), last()). RunFailure when there is no fixed line left to remove
+    // (the moving zone reached the domain's end).
+    std::optional<std::vector<double>> change(const std::vector<double>& lines, double velocity);
+    // Find the rigid zone again in `lines` (a restart): the lines that sit at the zone's offsets from `centre`.
+    void locate(const std::vector<double>& lines, double centre);
+    int changes() const { return changes_; }
+
+private:
+    std::vector<double> offsets_;    // of the rigid zone's lines from the block's centre
+    int first_ = 0, last_ = 0;       // the rigid zone's lines
+    double below_ = 0.0, above_ = 0.0;  // the fixed cells' width H on each side
+    std::string key_;
+    int changes_ = 0;
+};
+
+}  // namespace chute
