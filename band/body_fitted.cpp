@@ -1,6 +1,7 @@
 #include "body_fitted.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "hole.hpp"
@@ -33,11 +34,6 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
             for (int axis = 0; axis < 2; ++axis) {
                 if (!moves_along(body, axis)) continue;
                 const Axis& a = axis == 0 ? grid_.x_axis() : grid_.y_axis();
-                if (a.periodic())
-                    throw std::invalid_argument("bodies." + body.name() +
-                                                ".grid_motion: layers need a domain that is not periodic along the "
-                                                "motion (boundaries." +
-                                                (axis == 0 ? "left" : "bottom") + ".type)");
                 layers_[axis].emplace(a.lines(), body.state().centre[axis], blocks.back().lower[axis],
                                       blocks.back().upper[axis], "bodies." + body.name() + ".grid_motion");
             }
@@ -153,6 +149,15 @@ void BodyFitted::begin_step(const Velocity&) {
 void BodyFitted::holes_found_again() {
     std::vector<SolidBlock> blocks;
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        if (static_cast<int>(k) == carrying_) {
+            // The carrying body's block is where its rigid zone is (the lines lag its final place by a fraction of
+            // the step's travel).
+            SolidBlock b = solid_.blocks()[k];
+            for (int axis = 0; axis < 2; ++axis)
+                if (layers_[axis]) b.lower[axis] = layers_[axis]->hole_lower(), b.upper[axis] = layers_[axis]->hole_upper();
+            blocks.push_back(b);
+            continue;
+        }
         blocks.push_back(hole_of(bodies_[k], grid_));
         blocks.back().velocity = solid_.blocks()[k].velocity;
     }
@@ -196,7 +201,18 @@ void BodyFitted::body_moved(std::size_t b, double dt) {
     // The step was projected with the sides at the predicted velocity (place -> follow); the update moved it.
     const std::array<double, 2> imposed = solid_.blocks()[b].velocity;
     const Vec2 v = bodies_[b].state().velocity;
-    follow();
+    if ((layers_[0] || layers_[1]) && !std::getenv("CHUTE_EXP_FOLLOW_FINAL")) {
+        // The lines stay where the step was projected (the body's predicted place, a distance dt (v - v*) / 2 from
+        // its final one): moving them after the projection would change the cells' volumes under a divergence-free
+        // flow. The next step's place() takes them to its own predicted place, the momentum moved conservatively.
+        solid_.set_velocity(b, {v.x(), v.y()});
+        GridMotion motion = flow_->grid_motion();
+        for (int axis = 0; axis < 2; ++axis)
+            if (layers_[axis]) motion.axis[axis].velocity = v[axis];
+        flow_->set_grid_motion(motion);
+    } else {
+        follow();
+    }
     flow_->add_hole_response(*response_, {v.x() - imposed[0], v.y() - imposed[1]}, dt);
 }
 

@@ -1,5 +1,6 @@
 #include "layers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,13 +25,13 @@ AxisLayers::AxisLayers(const std::vector<double>& lines, double centre, int hole
     while (first_ < hole_lower && same_width(width(first_), below_)) ++first_;
     last_ = cells;
     while (last_ > hole_upper && same_width(width(last_ - 1), above_)) --last_;
-    // A modifier on each side and at least one fixed cell beyond it to remove.
-    if (first_ < 2 || last_ > cells - 2)
-        throw std::invalid_argument(key_ + ": modifier layers need at least two cells of the far-field width (the "
-                                           "outermost cell's) between the block's zone and each end of the domain; "
-                                           "use spacing clustered with `max` and a domain that extends beyond the "
-                                           "block's path");
+    // A modifier on each side (the cell beyond the zone); the fixed cells beyond are checked when one is needed.
+    if (first_ < 1 || last_ > cells - 1)
+        throw std::invalid_argument(key_ + ": modifier layers need a cell between the block's zone (its window and "
+                                           "the growth up to the far-field width) and each end of the domain");
     for (int k = first_; k <= last_; ++k) offsets_.push_back(lines[k] - centre);
+    hole_lower_ = hole_lower - first_;
+    hole_upper_ = hole_upper - first_;
 }
 
 std::vector<double> AxisLayers::stretched(const std::vector<double>& lines, double centre) const {
@@ -45,24 +46,28 @@ std::vector<double> AxisLayers::stretched(const std::vector<double>& lines, doub
 std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>& lines, double velocity) {
     const int cells = static_cast<int>(lines.size()) - 1;
     const double lower = lines[first_] - lines[first_ - 1], upper = lines[last_ + 1] - lines[last_];
+    // The fixed cell beyond each modifier (none at the domain's end).
+    const double beyond_lower = first_ >= 2 ? lines[first_ - 1] - lines[first_ - 2] : 0.0;
+    const double beyond_upper = last_ + 2 <= cells ? lines[last_ + 2] - lines[last_ + 1] : 0.0;
     std::vector<double> out = lines;
-    if (velocity < 0.0 && lower < below_ / 3.0) {
-        // The lower modifier merges with the fixed cell below it; the upper one gets a line H below its fixed line.
-        if (first_ - 1 < 1)
+    if (velocity < 0.0 && lower < (beyond_lower > 0.0 ? beyond_lower : lower + upper) / 3.0) {
+        // The lower modifier merges with the fixed cell below it; the upper one gets a line as far below its fixed
+        // line as the merged cell was wide (or halfway if it is not thick enough), so the count stays.
+        if (beyond_lower == 0.0)
             throw RunFailure(key_ + ": the block's moving zone reached the domain's lower end (no fixed cell left "
                                     "below it to remove); extend the domain along its path");
-        double added = lines[last_ + 1] - above_;
-        if (added - lines[last_] < above_ / 3.0) added = 0.5 * (lines[last_] + lines[last_ + 1]);
+        double added = lines[last_ + 1] - beyond_lower;
+        if (added - lines[last_] < beyond_lower / 3.0) added = 0.5 * (lines[last_] + lines[last_ + 1]);
         out.erase(out.begin() + (first_ - 1));
         --first_;
         --last_;
         out.insert(out.begin() + (last_ + 1), added);
-    } else if (velocity > 0.0 && upper < above_ / 3.0) {
-        if (last_ + 1 > cells - 1)
+    } else if (velocity > 0.0 && upper < (beyond_upper > 0.0 ? beyond_upper : lower + upper) / 3.0) {
+        if (beyond_upper == 0.0)
             throw RunFailure(key_ + ": the block's moving zone reached the domain's upper end (no fixed cell left "
                                     "above it to remove); extend the domain along its path");
-        double added = lines[first_ - 1] + below_;
-        if (lines[first_] - added < below_ / 3.0) added = 0.5 * (lines[first_ - 1] + lines[first_]);
+        double added = lines[first_ - 1] + beyond_upper;
+        if (lines[first_] - added < beyond_upper / 3.0) added = 0.5 * (lines[first_ - 1] + lines[first_]);
         out.erase(out.begin() + (last_ + 1));
         out.insert(out.begin() + first_, added);
         ++first_;
@@ -76,10 +81,14 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
 
 void AxisLayers::locate(const std::vector<double>& lines, double centre) {
     const int n = static_cast<int>(offsets_.size());
+    double smallest = below_;
+    for (int k = 0; k + 1 < n; ++k) smallest = std::min(smallest, offsets_[k + 1] - offsets_[k]);
     for (int f = 1; f + n < static_cast<int>(lines.size()); ++f) {
-        bool match = true;
-        for (int k = 0; k < n && match; ++k)
-            match = std::abs(lines[f + k] - (centre + offsets_[k])) <= 1e-9 * (below_ + above_);
+        // The zone is rigid: its lines keep their spacings exactly, and sit near the offsets from the centre.
+        const double shift = lines[f] - (centre + offsets_[0]);
+        bool match = std::abs(shift) <= 0.25 * smallest;
+        for (int k = 1; k < n && match; ++k)
+            match = std::abs(lines[f + k] - (centre + offsets_[k]) - shift) <= 1e-9 * (below_ + above_);
         if (match) {
             first_ = f;
             last_ = f + n - 1;

@@ -7,17 +7,18 @@
 //
 //     fixed lines ... | lower modifier | rigid zone (the block, its clustered window) | upper modifier | ... fixed
 //
-// The fixed cells next to the rigid zone have the far-field width H of their side. When the shrinking modifier
-// is thinner than H / 3 (it shrinks: the block moves towards it), it merges with the fixed cell beyond it (a
-// line removed), and the growing one on the other side, then 5/3 H thick, gets a line at H from its fixed line
-// (a line added): a layer moves from ahead of the block to behind it, and the cell count stays the same. At
-// most one change per step and axis; the thresholds leave a hysteresis of H / 3 either way, so a block that
-// turns back does not trigger the reverse change at once. The rigid zone is never remapped (its cells are only
-// renumbered); the two modifiers are (core/grid/remap.hpp).
+// When the shrinking modifier is thinner than a third of the fixed cell beyond it (it shrinks: the block moves
+// towards it), it merges with that cell (a line removed), and the growing one on the other side gets a line as far
+// from its fixed line as the merged cell was wide (a line added; halfway if it is not thick enough): a layer moves
+// from ahead of the block to behind it, and the cell count stays the same (no redistribution over the ranks, no
+// new hypre grid). At most one change per step and axis; with far-field cells of width H the modifiers stay
+// between H / 3 and 5 H / 3 and a block that turns back does not trigger the reverse change at once (a hysteresis
+// of H / 3). The rigid zone is never remapped (its cells are only renumbered); the two modifiers are
+// (core/grid/remap.hpp).
 //
 // The rigid zone is the block's window and its growth up to the far-field width: the lines from the innermost
 // cell of width H (to 1e-9) on each side, H the width of the outermost cell on that side (`domain.<axis>.max`
-// with spacing clustered gives such a grid).
+// with spacing clustered gives such a grid); the modifier is the next cell out.
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ public:
 
     int first() const { return first_; }  // the rigid zone's lines [first, last] (global indices)
     int last() const { return last_; }
+    // The block's cells [hole_lower, hole_upper) now (the rigid zone carries them, renumbered by the changes).
+    int hole_lower() const { return first_ + hole_lower_; }
+    int hole_upper() const { return first_ + hole_upper_; }
     // The lines with the rigid zone centred on `centre` (the modifiers stretched). RunFailure when a modifier
     // would vanish (the block moved more than a layer in one step).
     std::vector<double> stretched(const std::vector<double>& lines, double centre) const;
@@ -40,13 +44,16 @@ public:
     // The rigid zone's indices follow (first(), last()). RunFailure when there is no fixed line left to remove
     // (the moving zone reached the domain's end).
     std::optional<std::vector<double>> change(const std::vector<double>& lines, double velocity);
-    // Find the rigid zone again in `lines` (a restart): the lines that sit at the zone's offsets from `centre`.
+    // Find the rigid zone again in `lines` (a restart): the lines that sit at the zone's offsets from `centre`
+    // (to a quarter of the smallest cell: the lines are where the step was projected, a fraction of a step's travel
+    // from the body's final place).
     void locate(const std::vector<double>& lines, double centre);
     int changes() const { return changes_; }
 
 private:
     std::vector<double> offsets_;    // of the rigid zone's lines from the block's centre
     int first_ = 0, last_ = 0;       // the rigid zone's lines
+    int hole_lower_ = 0, hole_upper_ = 0;  // the block's cells, from first_
     double below_ = 0.0, above_ = 0.0;  // the fixed cells' width H on each side
     std::string key_;
     int changes_ = 0;

@@ -1,6 +1,7 @@
 #include "flow_solver.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include "convection.hpp"
 #include "diffusion.hpp"
 #include "diagnostics.hpp"
+#include "line_motion.hpp"
 #include "projection.hpp"
 #include "remap.hpp"
 #include "time_step_control.hpp"
@@ -248,9 +250,27 @@ void FlowSolver::set_grid_motion(const GridMotion& motion) {
 }
 
 void FlowSolver::stretch_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
-    grid_->set_lines(std::move(x_lines), std::move(y_lines));
+    const std::vector<double> x_before = grid_->x_axis().lines(), y_before = grid_->y_axis().lines();
+    if (x_lines == x_before && y_lines == y_before) return;
+    // Before the projection the step's u* moves with the lines (its face values from u^n), after it u^{n+1}; the
+    // AB2 history (H^n) is kept per unit volume of the current cells.
+    const Velocity face = vel_;
+    Velocity& target = predicted_ ? star_ : vel_;
+    Velocity& history = predicted_ ? rhs_ : rhs_old_;
+    for (int axis = 0; axis < 2; ++axis) {
+        std::vector<double>& counted = counted_[axis];
+        const std::vector<double>& before = axis == 0 ? x_before : y_before;
+        const std::vector<double>& after = axis == 0 ? x_lines : y_lines;
+        if (after == before) continue;
+        counted.resize(before.size(), 0.0);
+        grid_->set_lines(axis == 0 ? after : grid_->x_axis().lines(), axis == 0 ? y_before : after);
+        move_momentum_with_lines(*grid_, axis, before, counted, face, target, {&history});
+        std::fill(counted.begin(), counted.end(), 0.0);
+    }
+    halo_->exchange(target);
+    if (!predicted_) fill_boundaries(vel_);
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
-    poisson_->update_coefficients();
+    poisson_->update_matrix();  // SMG set up on a nearby matrix took 90+ PCG iterations: rebuilt every step
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
@@ -301,6 +321,7 @@ void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<doub
     for (const Remapped& r : fields) halo_->exchange(*r.field);
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     poisson_->update_matrix();
+    history_dropped_ = !std::getenv("CHUTE_EXP_KEEP_HISTORY");
     refresh_ghosts();
 }
 
@@ -401,11 +422,27 @@ double FlowSolver::predict(double dt) {
     pending_ = StepStats{};
     if (dt <= 0.0) dt = next_dt();
     pending_.dt = dt;
-    double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;  // 0: forward Euler on the first step
+    // 0: forward Euler on the first step, and after a topology change: the remapped history of the cells that
+    // changed would not sweep their volumes as their lines do (the geometric conservation law).
+    double r = dt_previous_ > 0.0 && !history_dropped_ ? dt / dt_previous_ : 0.0;
+    history_dropped_ = false;
     // H^{n-1} holds the stress of the last step's scheme: after a switch this step is forward Euler.
     const bool implicit = implicit_step(dt);
     if (implicit != implicit_now_) r = 0.0;
     implicit_now_ = implicit;
+
+    // Lines that stretch: how far the fluxes below sweep each line (stretch_grid_lines() moves the momentum of the
+    // rest of the lines' motion).
+    if (lines_.stretching())
+        for (int axis = 0; axis < 2; ++axis) {
+            const AxisMotion& m = motion_.axis[axis];
+            std::vector<double>& counted = counted_[axis];
+            counted.assign((axis == 0 ? grid_->global_nx() : grid_->global_ny()) + 1, 0.0);
+            const double w = (1.0 + 0.5 * r) * m.velocity - 0.5 * r * previous_grid_velocity_[axis];
+            for (int k = std::max(m.first, 0); k <= std::min<int>(m.last, counted.size() - 1); ++k) counted[k] = dt * w;
+        }
+    previous_grid_velocity_ = {motion_.axis[0].velocity, motion_.axis[1].velocity};
+    predicted_ = true;
 
     // Momentum prediction (AB2 with the last pressure gradient), then the boundary faces of u*
     // (prescribed, convective or zero-stress).
@@ -433,6 +470,7 @@ StepStats FlowSolver::project() {
     stats.coupling_passes = 1;
     solve_and_correct(stats);
     publish_velocity();
+    predicted_ = false;
     std::swap(rhs_, rhs_old_);
     time_ += stats.dt;
     dt_previous_ = stats.dt;

@@ -141,11 +141,17 @@ public:
     void set_grid_motion(const GridMotion& motion);
     const GridMotion& grid_motion() const { return motion_; }
     const LineVelocities* line_velocities() const { return lines_.zero() ? nullptr : &lines_; }
+    // The moving lines' velocities the last step's fluxes used (a checkpoint carries them: with stretching lines the
+    // next step's Adams-Bashforth combination sweeps the lines by them too).
+    std::array<double, 2> previous_grid_velocity() const { return previous_grid_velocity_; }
+    void set_previous_grid_velocity(std::array<double, 2> w) { previous_grid_velocity_ = w; }
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt (the matrix is kept when the
     // spacings are the same to round-off: a translated grid).
     void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
-    // Move grid lines within a step (same counts, the same cells: a modifier layer stretching): the geometry and
-    // the Poisson matrix's coefficients follow, the multigrid hierarchy and the pressure history are kept.
+    // Move grid lines within a step (same counts, the same cells: a modifier layer stretching): the momentum is
+    // carried to the new control volumes conservatively (core/operators/line_motion.hpp: u* between predict() and
+    // project(), u^{n+1} after), the geometry and the Poisson matrix's coefficients follow, the multigrid hierarchy
+    // and the pressure history are kept. The lines' velocities the step's fluxes used are set_grid_motion()'s.
     void stretch_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
     // A topology change between steps (band/layers.hpp: a layer of cells added on one side of a moving zone and
     // one removed on the other; the same counts): the lines replaced, and the velocity, the pressures, the AB2
@@ -199,6 +205,12 @@ private:
     GridMotion motion_;                                 // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                              // and their velocities on this patch
     std::vector<Field2D*> remapped_;                    // other models' fields that follow topology changes
+    // Stretching lines: how far each line was swept by the step's fluxes (dt AB2(w), m; consumed by the first
+    // stretch_grid_lines() of the step), the grid velocities of the last step's fluxes, and whether u* is pending.
+    std::array<std::vector<double>, 2> counted_;
+    std::array<double, 2> previous_grid_velocity_{};
+    bool predicted_ = false;
+    bool history_dropped_ = false;  // a topology change: the next step is forward Euler
     std::vector<std::array<double, 2>> implicit_wall_;  // per solid block: this rank's sum of V L_implicit(u*)
 };
 

@@ -31,8 +31,12 @@ std::vector<CheckpointField> checkpoint_fields(Model& model) {
 std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::path& out_dir, int kept) {
     const FlowSolver& s = model.flow();
     const auto path = checkpoint_path(out_dir, s.step());
+    std::vector<CheckpointArray> arrays = model.free_bodies().checkpoint_arrays();
+    // The grid velocities the last step's fluxes used (stretching lines: the next step's AB2 sweep counts them).
+    const std::array<double, 2> w = s.previous_grid_velocity();
+    arrays.push_back({"flow_previous_grid_velocity", {w[0], w[1]}});
     write_checkpoint(s.grid(), path, {s.step(), s.time(), s.previous_dt(), s.previous_dt(), s.implicit_diffusion()},
-                     checkpoint_fields(model), model.free_bodies().checkpoint_arrays());
+                     checkpoint_fields(model), arrays);
     prune_checkpoints(out_dir, kept);
     return path;
 }
@@ -65,6 +69,8 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     solver.set_grid_lines(xl, yl);
     const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
     solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
+    if (const auto w = read_checkpoint_array(checkpoint, "flow_previous_grid_velocity"); w && w->size() == 2)
+        solver.set_previous_grid_velocity({(*w)[0], (*w)[1]});
     model.free_bodies().restore(checkpoint);
     model.carrier().restored();
     model.carrier().place(solver.time());

@@ -9,8 +9,8 @@ namespace chute {
 
 namespace {
 
-// Moving: the lines move (lv); the fluxes take the velocity relative to each face and the geometric conservation
-// law's term -phi_P (sum_f w_f A_f) / V keeps a uniform field uniform where cells stretch.
+// Moving: the lines move (lv); the fluxes take the velocity relative to each face (the conservative form: where
+// cells stretch, the change of their volume is the flow solver's, core/operators/line_motion.hpp).
 template <ConvectionScheme S, bool Moving>
 void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out,
                      const LineVelocities* lv) {
@@ -44,9 +44,7 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
             const double Vs = a0 * v(i - 1, j) + a1 * v(i, j) - wys;
             const double fn = Vn * transported<S>(Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
             const double fs = Vs * transported<S>(Vs, u(i, j - 2), u(i, j - 1), u(i, j), u(i, j + 1), ws);
-            double c = (fe - fw) / X.dc(i) + (fn - fs) / hy;
-            if (Moving) c += u(i, j) * ((wxe - wxw) / X.dc(i) + (wyn - wys) / hy);
-            out.u(i, j) = -c;
+            out.u(i, j) = -((fe - fw) / X.dc(i) + (fn - fs) / hy);
         }
     }
     // v momentum
@@ -65,9 +63,7 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
             const double ww = (X.f(i) - X.c(i - 1)) / X.dc(i);
             const double fe = Ue * transported<S>(Ue, v(i - 1, j), v(i, j), v(i + 1, j), v(i + 2, j), we);
             const double fw = Uw * transported<S>(Uw, v(i - 2, j), v(i - 1, j), v(i, j), v(i + 1, j), ww);
-            double c = (fe - fw) / X.w(i) + (fn - fs) / Y.dc(j);
-            if (Moving) c += v(i, j) * ((wxe - wxw) / X.w(i) + (wyn - wys) / Y.dc(j));
-            out.v(i, j) = -c;
+            out.v(i, j) = -((fe - fw) / X.w(i) + (fn - fs) / Y.dc(j));
         }
     }
 }

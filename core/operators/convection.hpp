@@ -21,9 +21,9 @@ namespace chute {
 // out(i, j) = -C(i, j) on the faces [u_first, nx) x [0, ny) for u and [0, nx) x [v_first, ny) for v.
 // On a grid whose lines move (`lines`, core/grid/grid_motion.hpp: the body-fitted grid carried by its block;
 // arbitrary Lagrangian-Eulerian form, Donea et al. 2004) the transporting velocities are relative to the faces,
-// U - w_f, while the transported velocity stays the inertial one; where the faces of a control volume move apart
-// (a stretching modifier layer) the geometric conservation law's term -u_P (sum_f w_f A_f) / V keeps a uniform
-// field uniform. A rigid translation keeps every area and the term vanishes.
+// U - w_f, while the transported velocity stays the inertial one. The rate stays per unit volume of the control
+// volume at the start of the step; where the lines stretch it (a modifier layer), the flow solver carries the
+// momentum to the new volumes (core/operators/line_motion.hpp).
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
                 const LineVelocities* lines = nullptr);
 
