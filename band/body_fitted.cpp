@@ -1,7 +1,6 @@
 #include "body_fitted.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <stdexcept>
 
 #include "hole.hpp"
@@ -154,7 +153,8 @@ void BodyFitted::holes_found_again() {
             // the step's travel).
             SolidBlock b = solid_.blocks()[k];
             for (int axis = 0; axis < 2; ++axis)
-                if (layers_[axis]) b.lower[axis] = layers_[axis]->hole_lower(), b.upper[axis] = layers_[axis]->hole_upper();
+                if (layers_[axis])
+                    b.lower[axis] = layers_[axis]->hole_lower(), b.upper[axis] = layers_[axis]->hole_upper();
             blocks.push_back(b);
             continue;
         }
@@ -201,7 +201,7 @@ void BodyFitted::body_moved(std::size_t b, double dt) {
     // The step was projected with the sides at the predicted velocity (place -> follow); the update moved it.
     const std::array<double, 2> imposed = solid_.blocks()[b].velocity;
     const Vec2 v = bodies_[b].state().velocity;
-    if ((layers_[0] || layers_[1]) && !std::getenv("CHUTE_EXP_FOLLOW_FINAL")) {
+    if (layers_[0] || layers_[1]) {
         // The lines stay where the step was projected (the body's predicted place, a distance dt (v - v*) / 2 from
         // its final one): moving them after the projection would change the cells' volumes under a divergence-free
         // flow. The next step's place() takes them to its own predicted place, the momentum moved conservatively.

@@ -27,8 +27,9 @@ AxisLayers::AxisLayers(const std::vector<double>& lines, double centre, int hole
     while (last_ > hole_upper && same_width(width(last_ - 1), above_)) --last_;
     // A modifier on each side (the cell beyond the zone); the fixed cells beyond are checked when one is needed.
     if (first_ < 1 || last_ > cells - 1)
-        throw std::invalid_argument(key_ + ": modifier layers need a cell between the block's zone (its window and "
-                                           "the growth up to the far-field width) and each end of the domain");
+        throw std::invalid_argument(key_ +
+                                    ": modifier layers need a cell between the block's zone (its window and "
+                                    "the growth up to the far-field width) and each end of the domain");
     for (int k = first_; k <= last_; ++k) offsets_.push_back(lines[k] - centre);
     hole_lower_ = hole_lower - first_;
     hole_upper_ = hole_upper - first_;
@@ -38,8 +39,9 @@ std::vector<double> AxisLayers::stretched(const std::vector<double>& lines, doub
     std::vector<double> out = lines;
     for (std::size_t k = 0; k < offsets_.size(); ++k) out[first_ + k] = centre + offsets_[k];
     if (!(out[first_] > out[first_ - 1]) || !(out[last_ + 1] > out[last_]))
-        throw RunFailure(key_ + ": the block moved through a whole modifier layer in one step (the step is too "
-                                "long for the far-field cells, or a layer change was missed)");
+        throw RunFailure(key_ +
+                         ": the block moved through a whole modifier layer in one step (the step is too "
+                         "long for the far-field cells, or a layer change was missed)");
     return out;
 }
 
@@ -54,8 +56,9 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
         // The lower modifier merges with the fixed cell below it; the upper one gets a line as far below its fixed
         // line as the merged cell was wide (or halfway if it is not thick enough), so the count stays.
         if (beyond_lower == 0.0)
-            throw RunFailure(key_ + ": the block's moving zone reached the domain's lower end (no fixed cell left "
-                                    "below it to remove); extend the domain along its path");
+            throw RunFailure(key_ +
+                             ": the block's moving zone reached the domain's lower end (no fixed cell left "
+                             "below it to remove); extend the domain along its path");
         double added = lines[last_ + 1] - beyond_lower;
         if (added - lines[last_] < beyond_lower / 3.0) added = 0.5 * (lines[last_] + lines[last_ + 1]);
         out.erase(out.begin() + (first_ - 1));
@@ -64,8 +67,9 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
         out.insert(out.begin() + (last_ + 1), added);
     } else if (velocity > 0.0 && upper < (beyond_upper > 0.0 ? beyond_upper : lower + upper) / 3.0) {
         if (beyond_upper == 0.0)
-            throw RunFailure(key_ + ": the block's moving zone reached the domain's upper end (no fixed cell left "
-                                    "above it to remove); extend the domain along its path");
+            throw RunFailure(key_ +
+                             ": the block's moving zone reached the domain's upper end (no fixed cell left "
+                             "above it to remove); extend the domain along its path");
         double added = lines[first_ - 1] + beyond_upper;
         if (lines[first_] - added < beyond_upper / 3.0) added = 0.5 * (lines[first_ - 1] + lines[first_]);
         out.erase(out.begin() + (last_ + 1));
@@ -95,8 +99,9 @@ void AxisLayers::locate(const std::vector<double>& lines, double centre) {
             return;
         }
     }
-    throw std::invalid_argument(key_ + ": the restored grid has no rigid zone around the block at its offsets (a "
-                                       "checkpoint of another case?)");
+    throw std::invalid_argument(key_ +
+                                ": the restored grid has no rigid zone around the block at its offsets (a "
+                                "checkpoint of another case?)");
 }
 
 }  // namespace chute

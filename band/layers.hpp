@@ -51,10 +51,10 @@ public:
     int changes() const { return changes_; }
 
 private:
-    std::vector<double> offsets_;    // of the rigid zone's lines from the block's centre
-    int first_ = 0, last_ = 0;       // the rigid zone's lines
+    std::vector<double> offsets_;          // of the rigid zone's lines from the block's centre
+    int first_ = 0, last_ = 0;             // the rigid zone's lines
     int hole_lower_ = 0, hole_upper_ = 0;  // the block's cells, from first_
-    double below_ = 0.0, above_ = 0.0;  // the fixed cells' width H on each side
+    double below_ = 0.0, above_ = 0.0;     // the fixed cells' width H on each side
     std::string key_;
     int changes_ = 0;
 };

@@ -1,15 +1,14 @@
 #include "flow_solver.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
 #include "convection.hpp"
-#include "diffusion.hpp"
 #include "diagnostics.hpp"
+#include "diffusion.hpp"
 #include "line_motion.hpp"
 #include "projection.hpp"
 #include "remap.hpp"
@@ -300,10 +299,9 @@ void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<doub
         Field2D* field;
         bool on_x_lines, on_y_lines;
     };
-    std::vector<Remapped> fields = {{&vel_.u, true, false},       {&vel_.v, false, true},
-                                    {&rhs_old_.u, true, false},   {&rhs_old_.v, false, true},
-                                    {&p_, false, false},          {&p_old_, false, false},
-                                    {&eddy_.cell, false, false},  {&eddy_.corner, true, true}};
+    std::vector<Remapped> fields = {{&vel_.u, true, false},      {&vel_.v, false, true},     {&rhs_old_.u, true, false},
+                                    {&rhs_old_.v, false, true},  {&p_, false, false},        {&p_old_, false, false},
+                                    {&eddy_.cell, false, false}, {&eddy_.corner, true, true}};
     for (Field2D* f : remapped_) fields.push_back({f, false, false});
     for (const Remapped& r : fields) halo_->exchange(*r.field);
     std::vector<double> x_before = grid_->x_axis().lines(), y_before = grid_->y_axis().lines();
@@ -321,8 +319,14 @@ void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<doub
     for (const Remapped& r : fields) halo_->exchange(*r.field);
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     poisson_->update_matrix();
-    history_dropped_ = !std::getenv("CHUTE_EXP_KEEP_HISTORY");
-    refresh_ghosts();
+    history_dropped_ = true;
+    // The domain's boundaries only: the solid cells are those of the old numbering until the carrier sets them
+    // again (set_solid_cells() fills the holes' faces then); filling them now would write hole values into the
+    // fluid faces the renumbering moved there.
+    halo_->exchange(vel_);
+    bc_->apply(vel_);
+    halo_->exchange(p_);
+    bc_->apply_pressure(p_);
 }
 
 std::array<double, 2> FlowSolver::project_after_change() {

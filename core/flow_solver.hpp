@@ -201,16 +201,16 @@ private:
     long step_ = 0;
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
-    double weight_new_ = 1.0, weight_old_ = 0.0;        // the last step's AB2 weights of H^n and H^{n-1}
-    GridMotion motion_;                                 // how the grid's lines move (translate_grid, band/)
-    LineVelocities lines_;                              // and their velocities on this patch
-    std::vector<Field2D*> remapped_;                    // other models' fields that follow topology changes
+    double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
+    GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
+    LineVelocities lines_;                        // and their velocities on this patch
+    std::vector<Field2D*> remapped_;              // other models' fields that follow topology changes
     // Stretching lines: how far each line was swept by the step's fluxes (dt AB2(w), m; consumed by the first
     // stretch_grid_lines() of the step), the grid velocities of the last step's fluxes, and whether u* is pending.
     std::array<std::vector<double>, 2> counted_;
     std::array<double, 2> previous_grid_velocity_{};
     bool predicted_ = false;
-    bool history_dropped_ = false;  // a topology change: the next step is forward Euler
+    bool history_dropped_ = false;                      // a topology change: the next step is forward Euler
     std::vector<std::array<double, 2>> implicit_wall_;  // per solid block: this rank's sum of V L_implicit(u*)
 };
 

@@ -36,8 +36,8 @@ public:
     LineVelocities() = default;
     LineVelocities(const Grid& grid, const GridMotion& motion);
 
-    double x(int i) const { return x_[i + offset_]; }       // line i (the left face of cell i)
-    double y(int j) const { return y_[j + offset_]; }       // line j (the bottom face of cell j)
+    double x(int i) const { return x_[i + offset_]; }           // line i (the left face of cell i)
+    double y(int j) const { return y_[j + offset_]; }           // line j (the bottom face of cell j)
     double xc(int i) const { return 0.5 * (x(i) + x(i + 1)); }  // centre of cell i
     double yc(int j) const { return 0.5 * (y(j) + y(j + 1)); }
     bool zero() const { return zero_; }

@@ -44,12 +44,10 @@ void move_component(const Axis& old_axis, const Axis& new_axis, const LocalAxis&
         if (scale == 1.0 && low_swept == 0.0 && high_swept == 0.0) continue;
         // Linear weights of the face values: at line g between the centres of cells g - 1 and g, or at the centre
         // of cell g - 1 (g) between lines g - 1 and g (g and g + 1): the midpoint.
-        const double low_weight = centred ? (old_axis.line(g) - old_axis.centre(g - 1)) /
-                                                (old_axis.centre(g) - old_axis.centre(g - 1))
-                                          : 0.5;
-        const double high_weight = centred ? (old_axis.line(g + 1) - old_axis.centre(g)) /
-                                                 (old_axis.centre(g + 1) - old_axis.centre(g))
-                                           : 0.5;
+        const double low_weight =
+            centred ? (old_axis.line(g) - old_axis.centre(g - 1)) / (old_axis.centre(g) - old_axis.centre(g - 1)) : 0.5;
+        const double high_weight =
+            centred ? (old_axis.line(g + 1) - old_axis.centre(g)) / (old_axis.centre(g + 1) - old_axis.centre(g)) : 0.5;
         for (int m = 0; m < n_across; ++m) {
             low_face = at(face, k - 1, m) + low_weight * (at(face, k, m) - at(face, k - 1, m));
             high_face = at(face, k, m) + high_weight * (at(face, k + 1, m) - at(face, k, m));

@@ -7,14 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "axis.hpp"
+#include "body_fitted.hpp"
 #include "case_config.hpp"
+#include "case_file.hpp"
 #include "diagnostics.hpp"
 #include "flow_solver.hpp"
-#include "body_fitted.hpp"
-#include "case_file.hpp"
 #include "layers.hpp"
 #include "model.hpp"
 #include "run_failure.hpp"
@@ -225,10 +224,11 @@ TEST(Layers, PeriodicBoxKeepsMassAndMomentumAcrossTopologyChanges) {
     }
     const std::array<double, 2> end = momentum(s);
     const double scale = 0.3 * 22.0;  // |momentum| of the drift
-    std::printf("layers in a periodic box: %d changes, remap momentum error %.2e, divergence after %.2e, kinetic "
-                "energy change %.2e, momentum drift over the run %.2e %.2e (of %.2f)\n",
-                layers.changes(), remap_error, divergence_after, energy_change, (end[0] - start[0]) / scale,
-                (end[1] - start[1]) / scale, scale);
+    std::printf(
+        "layers in a periodic box: %d changes, remap momentum error %.2e, divergence after %.2e, kinetic "
+        "energy change %.2e, momentum drift over the run %.2e %.2e (of %.2f)\n",
+        layers.changes(), remap_error, divergence_after, energy_change, (end[0] - start[0]) / scale,
+        (end[1] - start[1]) / scale, scale);
     EXPECT_GE(layers.changes(), 10);
     EXPECT_LT(remap_error / scale, 1e-13);
     EXPECT_LT(divergence_after, 1e-10);
@@ -238,15 +238,16 @@ TEST(Layers, PeriodicBoxKeepsMassAndMomentumAcrossTopologyChanges) {
 
 namespace {
 
-// A square of side 1 moving down at 1 m/s through a channel 4 wide with slip sides, periodic along y (12 long):
-// the same flow whether the whole grid moves with the square or only a zone around it (periodic, the boundaries
-// along the motion are no boundaries at all).
+// A square of side 1 moving down at 1 m/s (Re 100) through a channel 4 wide with slip sides, periodic along y (12
+// long): the same flow whether the whole grid moves with the square or only a zone around it (periodic, the
+// boundaries along the motion are no boundaries at all). The zone's window reaches 2.5 m behind the square, past
+// its near wake.
 std::string moving_square(const std::string& grid_motion) {
     return R"(
 name: moving_square
 domain:
   x: {start: -2.0, end: 2.0, cells: 16}
-  y: {start: -6.0, end: 6.0, spacing: clustered, core: [-1.0, 1.0], core_cells: 8, ratio: 1.2, max: 0.5}
+  y: {start: -6.0, end: 6.0, spacing: clustered, core: [-1.0, 3.0], core_cells: 16, ratio: 1.2, max: 0.5}
 fluid: {density: 1000.0, viscosity: 1.0e-2}
 boundaries: {left: {type: slip}, right: {type: slip}, bottom: {type: periodic}, top: {type: periodic}}
 bodies:
@@ -255,7 +256,8 @@ bodies:
     centre: [0.0, 0.0]
     size: [1.0, 1.0]
     carrier: body_fitted
-    grid_motion: )" + grid_motion + R"(
+    grid_motion: )" +
+           grid_motion + R"(
     motion: {type: constant_velocity, velocity: [0.0, -1.0]}
 numerics: {dt: 0.02, convection: van_leer, poisson: {tolerance: 1.0e-12}}
 time: {end: 2.0}
@@ -282,8 +284,9 @@ MovingSquareRun run_moving_square(const std::string& grid_motion) {
 }  // namespace
 
 // The modifier layers against the rigidly translating grid (part 1) on the same flow: a square moving 2 m through a
-// y-periodic channel, its zone's modifiers changing 5 times on each side. The drag histories agree to the
-// difference of the two discretisations (the cells beyond the zone at rest instead of moving with it).
+// y-periodic channel, a layer moving from ahead of it to behind it 4 times. The drag histories agree to the
+// difference of the two discretisations (the cells beyond the zone at rest instead of moving with it, the
+// modifiers between 1/3 and 5/3 of the far-field width): 0.2 % on the mean, 1 % in any step.
 TEST(Layers, MovingSquareMatchesTheTranslatingGrid) {
     const MovingSquareRun translate = run_moving_square("translate"), layers = run_moving_square("layers");
     double worst = 0.0, mean_t = 0.0, mean_l = 0.0;
@@ -292,11 +295,14 @@ TEST(Layers, MovingSquareMatchesTheTranslatingGrid) {
         mean_t += translate.drag[n];
         mean_l += layers.drag[n];
     }
-    std::printf("moving square, layers against translate: %d changes, drag over t = 0.2-2: %.3f / %.3f N/m (%.2e), "
-                "largest difference in a step %.2e\n",
-                layers.changes, mean_l / 90.0, mean_t / 90.0, std::abs(mean_l - mean_t) / std::abs(mean_t), worst);
+    std::printf(
+        "moving square, layers against translate: %d changes, drag over t = 0.2-2: %.3f / %.3f N/m (%.2e), "
+        "largest difference in a step %.2e\n",
+        layers.changes, mean_l / 90.0, mean_t / 90.0, std::abs(mean_l - mean_t) / std::abs(mean_t), worst);
     EXPECT_GE(layers.changes, 4);
-    if (std::getenv("CHUTE_PRINT"))
-        for (std::size_t n = 0; n < translate.drag.size(); ++n)
-            std::printf("%zu %.3f %.3f\n", n, translate.drag[n], layers.drag[n]);
+    // Measured (2026-11-24): 4.8e-4 on the mean, 5.4e-3 in the worst step (the first change; 2.7e-3 before any).
+    // With the zone's window ending 0.5 m behind the square instead of 2.5 m (its upper modifier in the near wake):
+    // 1.5e-3 and 5.8e-3.
+    EXPECT_LT(std::abs(mean_l - mean_t) / std::abs(mean_t), 2e-3);
+    EXPECT_LT(worst, 1e-2);
 }

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "body_fitted.hpp"
 #include "flow_solver.hpp"
 #include "gather.hpp"
 #include "model.hpp"
@@ -369,5 +370,45 @@ TEST(Parallel, FreeBodyFittedSquareMatchesOneRank) {
             "free body-fitted square, np=2 vs np=1: max difference %.2e of the drag (moved %.4f m at %.4f m/s)\n",
             worst, serial[4], serial[5]);
     EXPECT_GT(serial[4], 1e-3);  // it moves
+    EXPECT_LT(worst, 1e-8);
+}
+
+// The square falling free along y with modifier layers (band/layers.hpp), split across y so that the renumbered
+// rigid zone and the remap cross the ranks' boundary: layer changes in 100 steps, forces and motion match.
+TEST(Parallel, BodyFittedLayersMatchOneRank) {
+    if (world_size() < 2) GTEST_SKIP() << "needs 2 ranks";
+    CaseConfig c;
+    c.x = AxisConfig{-2.0, 2.0, 16, "uniform", 2.0, 1.05, {}};
+    c.y = AxisConfig{-8.0, 4.0, 0, "clustered", 2.0, 1.2, {}, {-1.0, 1.0}, 8, 0.0, 0.5};
+    c.boundary[0].type = c.boundary[1].type = BoundaryType::slip;
+    c.boundary[2].type = c.boundary[3].type = BoundaryType::wall;
+    c.viscosity = 1e-2;
+    c.convection = ConvectionScheme::van_leer;
+    c.poisson_tolerance = 1e-10;
+    BodyConfig square = body_fitted_square();
+    square.layers = true;
+    square.density = 2500.0;
+    square.motion.type = MotionType::free;
+    square.motion.locked = {true, false, true};
+    c.bodies = {square};
+    auto run = [&](MPI_Comm comm, std::array<int, 2> ranks) {
+        CaseConfig cc = c;
+        cc.ranks = ranks;
+        Model model(cc, comm);
+        std::array<double, 6> f = forces_after(model, 100, 0.01);
+        const BodyState& s = model.carrier().bodies()[0].state();
+        f[4] = s.centre.y();
+        f[5] = dynamic_cast<const BodyFitted&>(model.carrier()).layer_changes()[1];
+        return f;
+    };
+    const auto [parallel, serial] = parallel_and_serial(run);
+    double worst = 0.0;
+    for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(parallel[k] - serial[k]) / std::abs(serial[1]));
+    if (rank() == 0)
+        std::printf("body-fitted layers, np=2 vs np=1: max difference %.2e of the drag; fell %.4f m with %g changes\n",
+                    worst, serial[4], serial[5]);
+    EXPECT_GE(serial[5], 2.0);
+    EXPECT_EQ(parallel[5], serial[5]);
+    EXPECT_NEAR(parallel[4], serial[4], 1e-9);
     EXPECT_LT(worst, 1e-8);
 }
