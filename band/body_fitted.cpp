@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "hole.hpp"
 #include "hole_stress.hpp"
@@ -84,6 +85,12 @@ void BodyFitted::attach(FlowSolver& flow) {
     flow_ = &flow;
     follow();
     if (carrying_ < 0 || !bodies_[carrying_].free()) return;
+    compute_response();
+}
+
+// The flow's response to the free body's velocity on the grid as it is (band/body_fitted.hpp), and its added mass.
+void BodyFitted::compute_response() {
+    response_centre_ = zone_centre_;
     response_ = flow_->hole_response(static_cast<std::size_t>(carrying_));
     const SolidBlock& block = solid_.blocks()[carrying_];
     added_mass_.setZero();
@@ -101,7 +108,9 @@ void BodyFitted::follow() {
     if (layers_[0] || layers_[1]) {
         // The rigid zones where the body is, the modifiers stretched; the lines along an axis without layers stay.
         std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
+        const bool keep = std::exchange(lines_restored_, false);
         GridMotion motion;
+        if (!keep) zone_centre_ = {s.centre.x(), s.centre.y()};
         if (layers_[0]) {
             x = layers_[0]->stretched(x, s.centre.x());
             motion.axis[0] = {layers_[0]->first(), layers_[0]->last(), s.velocity.x()};
@@ -110,7 +119,7 @@ void BodyFitted::follow() {
             y = layers_[1]->stretched(y, s.centre.y());
             motion.axis[1] = {layers_[1]->first(), layers_[1]->last(), s.velocity.y()};
         }
-        if (x != grid_.x_axis().lines() || y != grid_.y_axis().lines()) flow_->stretch_grid_lines(x, y);
+        if (!keep && (x != grid_.x_axis().lines() || y != grid_.y_axis().lines())) flow_->stretch_grid_lines(x, y);
         flow_->set_grid_motion(motion);
         solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
         return;
@@ -163,15 +172,46 @@ void BodyFitted::holes_found_again() {
     }
     solid_.set(std::move(blocks));
     flow_->set_solid_cells(&solid_);
-    if (response_) attach(*flow_);
+    if (response_) compute_response();
 }
 
-void BodyFitted::restored() {
+BodyFitted::NamedArrays BodyFitted::checkpoint_arrays() const {
+    if (!layers_[0] && !layers_[1]) return {};
+    return {{"zone_centre", {zone_centre_[0], zone_centre_[1]}},
+            {"response_centre", {response_centre_[0], response_centre_[1]}}};
+}
+
+void BodyFitted::restored(const NamedArrays& arrays) {
     if (!layers_[0] && !layers_[1]) return;
+    const auto zone = arrays.find("zone_centre"), response = arrays.find("response_centre");
+    if (zone == arrays.end() || response == arrays.end() || zone->second.size() != 2 || response->second.size() != 2)
+        throw std::runtime_error(
+            "the checkpoint has no modifier-layer state (zone_centre, response_centre) for bodies." +
+            bodies_[carrying_].name() + ": written by a run without grid_motion layers?");
+    zone_centre_ = {zone->second[0], zone->second[1]};
+    for (int axis = 0; axis < 2; ++axis)
+        if (layers_[axis])
+            layers_[axis]->locate(axis == 0 ? grid_.x_axis().lines() : grid_.y_axis().lines(), zone_centre_[axis]);
     const BodyState& s = bodies_[carrying_].state();
-    if (layers_[0]) layers_[0]->locate(grid_.x_axis().lines(), s.centre.x());
-    if (layers_[1]) layers_[1]->locate(grid_.y_axis().lines(), s.centre.y());
-    holes_found_again();
+    solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
+    // The blocks where the zones are; a free body's response on the grid it was computed on (the lines at the last
+    // layer change), as the straight run holds it.
+    lines_restored_ = true;
+    const std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
+    const std::array<double, 2> at_change = {response->second[0], response->second[1]};
+    if (response_ && at_change != zone_centre_) {
+        flow_->set_grid_lines(layers_[0] ? layers_[0]->stretched(x, at_change[0]) : x,
+                              layers_[1] ? layers_[1]->stretched(y, at_change[1]) : y, true);
+        const std::array<double, 2> now = zone_centre_;
+        zone_centre_ = at_change;
+        holes_found_again();
+        zone_centre_ = now;
+        flow_->set_grid_lines(x, y, true);
+        flow_->set_solid_cells(&solid_);
+    } else {
+        holes_found_again();
+    }
+    lines_restored_ = true;  // the place() after the restore keeps the lines too
 }
 
 std::array<int, 2> BodyFitted::layer_changes() const {

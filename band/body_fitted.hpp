@@ -66,7 +66,8 @@ public:
 
     const SolidCells* solid_cells() const override { return &solid_; }
     void attach(FlowSolver& flow) override;
-    void restored() override;
+    NamedArrays checkpoint_arrays() const override;
+    void restored(const NamedArrays& arrays) override;
 
     // The layer changes so far along x and y, and the kinetic energy of the flow before and after the projection
     // that followed the last one (m^4/s^2 per unit density and depth).
@@ -92,6 +93,11 @@ private:
     // The modifier layers along the axes the carrying body moves along (grid_motion: layers).
     std::array<std::optional<AxisLayers>, 2> layers_;
     std::array<double, 2> change_energy_{};
+    bool lines_restored_ = false;  // restored(): the next follow() keeps the checkpoint's lines
+    // With layers: where the rigid zones were centred last (the lines' place), and where they were when the free
+    // body's response was computed (at the last layer change; a restart recomputes it there, bit for bit).
+    std::array<double, 2> zone_centre_{}, response_centre_{};
+    void compute_response();
     void holes_found_again();  // after the lines changed: the blocks' cells, the solver's and the response
 };
 

@@ -20,6 +20,7 @@
 // that cuts its bodies out of the grid hands the flow solver the cells it took: solid_cells().
 // Free-body dynamics, turbulence, outputs and summaries hold a Carrier&, never a concrete carrier.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,9 +87,12 @@ public:
     // The flow the bodies are carried through, handed once after both are built (after the solver took the
     // solid cells): a carrier that reads the solver's fluxes, or moves its grid with a body, keeps it.
     virtual void attach(FlowSolver&) {}
-    // After a checkpoint restored the grid's lines and the bodies' states (run/restart_state.cpp), before place():
-    // a carrier whose cells follow the lines (a body-fitted grid with modifier layers) finds them again.
-    virtual void restored() {}
+    // What a carrier needs in a checkpoint to continue bit for bit (small arrays, by name), and after a checkpoint
+    // restored the grid's lines, the flow and the bodies' states (run/restart_state.cpp), before place(): those
+    // arrays back, and a carrier whose cells follow the lines (a body-fitted grid with modifier layers) finds them.
+    using NamedArrays = std::map<std::string, std::vector<double>>;
+    virtual NamedArrays checkpoint_arrays() const { return {}; }
+    virtual void restored(const NamedArrays&) {}
 };
 
 }  // namespace chute

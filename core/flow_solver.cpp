@@ -230,7 +230,6 @@ void FlowSolver::restore(long step, double time, double dt_previous, bool implic
     time_ = time;
     dt_previous_ = dt_previous;
     pressure_history_ = step > 0;  // the checkpoint carries p^{n-1}
-    refresh_ghosts();
 }
 
 void FlowSolver::translate_grid(double dx, double dy) {
@@ -272,7 +271,7 @@ void FlowSolver::stretch_grid_lines(std::vector<double> x_lines, std::vector<dou
     poisson_->update_matrix();  // SMG set up on a nearby matrix took 90+ PCG iterations: rebuilt every step
 }
 
-void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
+void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines, bool keep_history) {
     // The same spacings to round-off (a grid that translated, as a restart of a body-fitted run finds it): the
     // lines move, the matrix stays the one the run was solving with, so that the restart continues bit for bit.
     auto same_spacings = [](const Axis& a, const std::vector<double>& lines) {
@@ -290,7 +289,7 @@ void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double>
     grid_->set_lines(std::move(x_lines), std::move(y_lines));
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     poisson_->update_matrix();
-    pressure_history_ = false;
+    if (!keep_history) pressure_history_ = false;
 }
 
 void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines) {

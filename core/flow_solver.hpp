@@ -96,6 +96,8 @@ public:
     double previous_dt() const { return dt_previous_; }
     // Whether the last step's diffusion was implicit (checkpoints carry it: `auto` switches with hysteresis).
     bool implicit_diffusion() const { return implicit_now_; }
+    // The counters of a checkpoint's step. Ghosts are not filled: the caller does (refresh_ghosts()) once the solid
+    // cells are those of the checkpoint (run/restart_state.cpp).
     void restore(long step, double time, double dt_previous, bool implicit_diffusion = false);
     // Cells taken out of the fluid (a body-fitted hole; null: none). The solver fills their faces whenever it
     // fills the boundaries' ghosts and leaves them out of the pressure problem; call again after the blocks
@@ -146,8 +148,9 @@ public:
     std::array<double, 2> previous_grid_velocity() const { return previous_grid_velocity_; }
     void set_previous_grid_velocity(std::array<double, 2> w) { previous_grid_velocity_ = w; }
     // Move grid lines (same counts): geometry and the Poisson matrix are rebuilt (the matrix is kept when the
-    // spacings are the same to round-off: a translated grid).
-    void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // spacings are the same to round-off: a translated grid). The pressure history (the Poisson solver's starting
+    // guess) is dropped unless `keep_history` (lines moved and put back, as a restart does to recompute a response).
+    void set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines, bool keep_history = false);
     // Move grid lines within a step (same counts, the same cells: a modifier layer stretching): the momentum is
     // carried to the new control volumes conservatively (core/operators/line_motion.hpp: u* between predict() and
     // project(), u^{n+1} after), the geometry and the Poisson matrix's coefficients follow, the multigrid hierarchy

@@ -35,6 +35,8 @@ std::filesystem::path write_run_checkpoint(Model& model, const std::filesystem::
     // The grid velocities the last step's fluxes used (stretching lines: the next step's AB2 sweep counts them).
     const std::array<double, 2> w = s.previous_grid_velocity();
     arrays.push_back({"flow_previous_grid_velocity", {w[0], w[1]}});
+    for (const auto& [name, values] : model.carrier().checkpoint_arrays())
+        arrays.push_back({"carrier_" + name, values});
     write_checkpoint(s.grid(), path, {s.step(), s.time(), s.previous_dt(), s.previous_dt(), s.implicit_diffusion()},
                      checkpoint_fields(model), arrays);
     prune_checkpoints(out_dir, kept);
@@ -68,11 +70,16 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
                                  std::to_string(grid.global_nx()) + "x" + std::to_string(grid.global_ny()));
     solver.set_grid_lines(xl, yl);
     const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
-    solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);
+    solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);  // the counters; no ghost is filled
     if (const auto w = read_checkpoint_array(checkpoint, "flow_previous_grid_velocity"); w && w->size() == 2)
         solver.set_previous_grid_velocity({(*w)[0], (*w)[1]});
     model.free_bodies().restore(checkpoint);
-    model.carrier().restored();
+    // The holes where the checkpoint's lines put them before anything fills their faces: filled where the case
+    // first put them, they would overwrite the restored flow beside them (a grid with modifier layers).
+    Carrier::NamedArrays carrier_arrays;
+    for (const auto& [name, values] : model.carrier().checkpoint_arrays())
+        if (auto stored = read_checkpoint_array(checkpoint, "carrier_" + name)) carrier_arrays[name] = *stored;
+    model.carrier().restored(carrier_arrays);
     model.carrier().place(solver.time());
     solver.refresh_ghosts();  // a hole's faces move with its restored body
     if (KEpsilon* turbulence = model.turbulence()) turbulence->restored();

@@ -77,6 +77,7 @@ chute_validation(turbulent_channel_first_cell Turbulence.ChannelIndependentOfThe
 chute_validation(turbulent_channel_friction Turbulence.ChannelFrictionCoefficient 2 "validation;slow")
 chute_validation(free_fall_block_k_epsilon Turbulence.StudyBlockFallsAtTheExperimentsSpeed 2 "validation;slow")
 chute_validation(free_fall_block_body_fitted Turbulence.StudyBlockFallsBodyFittedConverged 2 "validation;slow")
+chute_validation(free_fall_block_body_fitted_layers Turbulence.StudyBlockFallsAlikeWithLayersAndATranslatingGrid 2 "validation;slow")
 chute_validation(slope_runout_water_air Turbulence.SlopeRunoutInWaterIsShorterThanInAir 2 "validation;slow")
 chute_validation(square_cylinder_re22000 Turbulence.SquareCylinderRe22000 2 "validation;slow")
 chute_validation(square_cylinder_re22000_body_fitted Turbulence.SquareCylinderRe22000BodyFitted 2 "validation;slow")
