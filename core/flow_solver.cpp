@@ -268,7 +268,12 @@ void FlowSolver::stretch_grid_lines(std::vector<double> x_lines, std::vector<dou
     halo_->exchange(target);
     if (!predicted_) fill_boundaries(vel_);
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
-    poisson_->update_matrix();  // SMG set up on a nearby matrix took 90+ PCG iterations: rebuilt every step
+    // The hierarchy is set up again at every topology change (change_grid_lines) and after a whole far-field cell of
+    // stretching at most; in between PCG is preconditioned with the last one.
+    if (poisson_->coefficient_updates() < kStretchesPerHierarchy)
+        poisson_->update_coefficients();
+    else
+        poisson_->update_matrix();
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines, bool keep_history) {

@@ -46,6 +46,8 @@ struct StepStats {
 
 class FlowSolver {
 public:
+    // Stretching steps (stretch_grid_lines) between two setups of the Poisson solver's multigrid hierarchy.
+    static constexpr int kStretchesPerHierarchy = 8;
     FlowSolver(const FlowConfig& config, MPI_Comm comm);
 
     // Impose the initial condition of the case (uniform current or Taylor-Green vortex) at time 0.
