@@ -1,6 +1,7 @@
 #include "body_fitted.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -121,6 +122,7 @@ void BodyFitted::follow() {
         }
         if (!keep && (x != grid_.x_axis().lines() || y != grid_.y_axis().lines())) flow_->stretch_grid_lines(x, y);
         flow_->set_grid_motion(motion);
+        refresh_hierarchy();
         solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
         return;
     }
@@ -172,6 +174,7 @@ void BodyFitted::holes_found_again() {
     }
     solid_.set(std::move(blocks));
     flow_->set_solid_cells(&solid_);
+    hierarchy_dirty_ = true;  // set up again on the current lines: follow() puts it on the quantized ones
     if (response_) compute_response();
 }
 
@@ -216,6 +219,19 @@ void BodyFitted::restored(const NamedArrays& arrays) {
 
 std::array<int, 2> BodyFitted::layer_changes() const {
     return {layers_[0] ? layers_[0]->changes() : 0, layers_[1] ? layers_[1]->changes() : 0};
+}
+
+void BodyFitted::refresh_hierarchy() {
+    std::array<long, 2> quantum{};
+    for (int axis = 0; axis < 2; ++axis)
+        if (layers_[axis]) quantum[axis] = std::lround(zone_centre_[axis] / (0.25 * layers_[axis]->far_width()));
+    if (!hierarchy_dirty_ && quantum == hierarchy_quantum_) return;
+    std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
+    if (layers_[0]) x = layers_[0]->stretched(x, quantum[0] * 0.25 * layers_[0]->far_width());
+    if (layers_[1]) y = layers_[1]->stretched(y, quantum[1] * 0.25 * layers_[1]->far_width());
+    flow_->set_up_pressure_hierarchy(std::move(x), std::move(y));
+    hierarchy_quantum_ = quantum;
+    hierarchy_dirty_ = false;
 }
 
 void BodyFitted::place(double t) {

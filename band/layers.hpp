@@ -49,6 +49,7 @@ public:
     // from the body's final place).
     void locate(const std::vector<double>& lines, double centre);
     int changes() const { return changes_; }
+    double far_width() const { return below_ < above_ ? below_ : above_; }  // the far-field cells' (the smaller side)
 
 private:
     std::vector<double> offsets_;          // of the rigid zone's lines from the block's centre

@@ -268,12 +268,16 @@ void FlowSolver::stretch_grid_lines(std::vector<double> x_lines, std::vector<dou
     halo_->exchange(target);
     if (!predicted_) fill_boundaries(vel_);
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
-    // The hierarchy is set up again at every topology change (change_grid_lines) and after a whole far-field cell of
-    // stretching at most; in between PCG is preconditioned with the last one.
-    if (poisson_->coefficient_updates() < kStretchesPerHierarchy)
-        poisson_->update_coefficients();
-    else
-        poisson_->update_matrix();
+    // PCG solves the new matrix with the multigrid hierarchy of the last set_up_pressure_hierarchy() (or rebuild).
+    poisson_->update_coefficients();
+}
+
+void FlowSolver::set_up_pressure_hierarchy(std::vector<double> x_lines, std::vector<double> y_lines) {
+    std::vector<double> x = grid_->x_axis().lines(), y = grid_->y_axis().lines();
+    grid_->set_lines(std::move(x_lines), std::move(y_lines));
+    poisson_->update_matrix();
+    grid_->set_lines(std::move(x), std::move(y));
+    poisson_->update_coefficients();
 }
 
 void FlowSolver::set_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines, bool keep_history) {

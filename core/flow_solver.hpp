@@ -46,8 +46,6 @@ struct StepStats {
 
 class FlowSolver {
 public:
-    // Stretching steps (stretch_grid_lines) between two setups of the Poisson solver's multigrid hierarchy.
-    static constexpr int kStretchesPerHierarchy = 8;
     FlowSolver(const FlowConfig& config, MPI_Comm comm);
 
     // Impose the initial condition of the case (uniform current or Taylor-Green vortex) at time 0.
@@ -158,6 +156,10 @@ public:
     // project(), u^{n+1} after), the geometry and the Poisson matrix's coefficients follow, the multigrid hierarchy
     // and the pressure history are kept. The lines' velocities the step's fluxes used are set_grid_motion()'s.
     void stretch_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // Set the Poisson solver's multigrid hierarchy up on these lines (nearby ones: the same cells), while PCG keeps
+    // solving the matrix of the grid's own lines. A caller whose lines stretch every step calls it now and then,
+    // on lines it can find again after a restart (band/body_fitted.cpp: the zone at a quantized place).
+    void set_up_pressure_hierarchy(std::vector<double> x_lines, std::vector<double> y_lines);
     // A topology change between steps (band/layers.hpp: a layer of cells added on one side of a moving zone and
     // one removed on the other; the same counts): the lines replaced, and the velocity, the pressures, the AB2
     // history, the eddy viscosity and every field handed to remap_with_grid() remapped conservatively
