@@ -37,6 +37,7 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
                 const Axis& a = axis == 0 ? grid_.x_axis() : grid_.y_axis();
                 layers_[axis].emplace(a.lines(), body.state().centre[axis], blocks.back().lower[axis],
                                       blocks.back().upper[axis], "bodies." + body.name() + ".grid_motion");
+                refuse_contact_it_cannot_take(body, axis);
             }
         const SolidBlock& b = blocks.back();
         double h = 1e300;
@@ -59,6 +60,27 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
 
 // The grid moves with the body along the axes it moves along (a free body's unlocked ones, a prescribed body's
 // with a velocity, amplitude or acceleration there): the boundaries across them would move too.
+// A body with layers can meet a wall across its motion: the layers between are removed until the modifier is the
+// gap, which must stay open (contact at contact.distance), and the rebound law acts with the obstacle taking the
+// water's share (the exact coupling then brings the water to the block's velocity).
+void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const {
+    const bool wall = [&] {
+        for (int s = 2 * axis; s < 2 * axis + 2; ++s)
+            if (settings_.boundaries[s] == BoundaryType::wall || settings_.boundaries[s] == BoundaryType::slip)
+                return true;
+        return false;
+    }();
+    if (!wall || !body.free()) return;
+    if (!(settings_.contact_distance > 0.0))
+        throw std::invalid_argument(
+            "contact.distance: the body_fitted body `" + body.name() +
+            "` with grid_motion layers can reach a wall across its motion, and meets it at a gap that its last layer "
+            "fills: set a gap > 0 (the block's first cell, or the study's 0.1 m)");
+    if (settings_.water_impulse_on_body)
+        throw std::invalid_argument("contact.water_impulse: `body` is not built for a body_fitted body (`" +
+                                    body.name() + "`); use `obstacle`");
+}
+
 bool BodyFitted::moves_along(const Body& body, int axis) const {
     const MotionConfig& m = body.config().motion;
     return body.free() ? !m.locked[axis]
@@ -120,9 +142,14 @@ void BodyFitted::follow() {
             y = layers_[1]->stretched(y, s.centre.y());
             motion.axis[1] = {layers_[1]->first(), layers_[1]->last(), s.velocity.y()};
         }
-        if (!keep && (x != grid_.x_axis().lines() || y != grid_.y_axis().lines())) flow_->stretch_grid_lines(x, y);
+        const bool moved = !keep && (x != grid_.x_axis().lines() || y != grid_.y_axis().lines());
+        if (moved) flow_->stretch_grid_lines(x, y);
         flow_->set_grid_motion(motion);
         refresh_hierarchy();
+        // Near a wall the stretching cell is the gap beside the block: the flow's response to the block's velocity
+        // (and its added mass, which grows as the gap closes) changes with it every step.
+        const auto trimmed = zone_trimmed();
+        if (moved && response_ && trimmed[0][0] + trimmed[0][1] + trimmed[1][0] + trimmed[1][1] > 0) compute_response();
         solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
         return;
     }
@@ -180,8 +207,12 @@ void BodyFitted::holes_found_again() {
 
 BodyFitted::NamedArrays BodyFitted::checkpoint_arrays() const {
     if (!layers_[0] && !layers_[1]) return {};
+    std::vector<double> trims;
+    for (int axis = 0; axis < 2; ++axis)
+        for (int k = 0; k < 2; ++k) trims.push_back(layers_[axis] ? layers_[axis]->trimmed()[k] : 0.0);
     return {{"zone_centre", {zone_centre_[0], zone_centre_[1]}},
-            {"response_centre", {response_centre_[0], response_centre_[1]}}};
+            {"response_centre", {response_centre_[0], response_centre_[1]}},
+            {"zone_trim", trims}};
 }
 
 void BodyFitted::restored(const NamedArrays& arrays) {
@@ -192,9 +223,14 @@ void BodyFitted::restored(const NamedArrays& arrays) {
             "the checkpoint has no modifier-layer state (zone_centre, response_centre) for bodies." +
             bodies_[carrying_].name() + ": written by a run without grid_motion layers?");
     zone_centre_ = {zone->second[0], zone->second[1]};
+    const auto trim = arrays.find("zone_trim");
     for (int axis = 0; axis < 2; ++axis)
-        if (layers_[axis])
+        if (layers_[axis]) {
+            if (trim != arrays.end() && trim->second.size() == 4)
+                layers_[axis]->trim(static_cast<int>(trim->second[2 * axis]),
+                                    static_cast<int>(trim->second[2 * axis + 1]));
             layers_[axis]->locate(axis == 0 ? grid_.x_axis().lines() : grid_.y_axis().lines(), zone_centre_[axis]);
+        }
     const BodyState& s = bodies_[carrying_].state();
     solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
     // The blocks where the zones are; a free body's response on the grid it was computed on (the lines at the last

@@ -39,6 +39,8 @@ namespace chute {
 struct BodyFittedSettings {
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
     std::array<BoundaryType, 4> boundaries{};                // left, right, bottom, top
+    double contact_distance = 0.0;                           // contact.distance (m)
+    bool water_impulse_on_body = false;                      // contact.water_impulse `body`
 };
 
 class BodyFitted final : public Carrier {
@@ -72,6 +74,11 @@ public:
     // The layer changes so far along x and y, and the kinetic energy of the flow before and after the projection
     // that followed the last one (m^4/s^2 per unit density and depth).
     std::array<int, 2> layer_changes() const;
+    // The zone's lines removed at its lower and upper end as it compressed towards a wall, along x and y.
+    std::array<std::array<int, 2>, 2> zone_trimmed() const {
+        return {layers_[0] ? layers_[0]->trimmed() : std::array<int, 2>{},
+                layers_[1] ? layers_[1]->trimmed() : std::array<int, 2>{}};
+    }
     std::array<double, 2> last_change_energy() const { return change_energy_; }
 
 private:
@@ -90,6 +97,7 @@ private:
     void follow();
     void refuse_walls_across_motion(const Body& body) const;
     bool moves_along(const Body& body, int axis) const;
+    void refuse_contact_it_cannot_take(const Body& body, int axis) const;
     // The modifier layers along the axes the carrying body moves along (grid_motion: layers).
     std::array<std::optional<AxisLayers>, 2> layers_;
     std::array<double, 2> change_energy_{};

@@ -38,7 +38,14 @@ AxisLayers::AxisLayers(const std::vector<double>& lines, double centre, int hole
 std::vector<double> AxisLayers::stretched(const std::vector<double>& lines, double centre) const {
     std::vector<double> out = lines;
     for (std::size_t k = 0; k < offsets_.size(); ++k) out[first_ + k] = centre + offsets_[k];
-    if (!(out[first_] > out[first_ - 1]) || !(out[last_ + 1] > out[last_]))
+    const bool lower_closed = !(out[first_] > out[first_ - 1]), upper_closed = !(out[last_ + 1] > out[last_]);
+    const int zone_top = static_cast<int>(offsets_.size()) - 1;
+    if ((lower_closed && first_ == 1 && hole_lower_ == 0) ||
+        (upper_closed && last_ + 2 == static_cast<int>(lines.size()) && hole_upper_ == zone_top))
+        throw RunFailure(key_ + ": the block reached the domain's " + (lower_closed ? "lower" : "upper") +
+                         " end (the layers between had all been removed); contact of a body_fitted body is not "
+                         "built yet: end the run before (time.end) or use the immersed carrier");
+    if (lower_closed || upper_closed)
         throw RunFailure(key_ +
                          ": the block moved through a whole modifier layer in one step (the step is too "
                          "long for the far-field cells, or a layer change was missed)");
@@ -47,32 +54,46 @@ std::vector<double> AxisLayers::stretched(const std::vector<double>& lines, doub
 
 std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>& lines, double velocity) {
     const int cells = static_cast<int>(lines.size()) - 1;
-    const double lower = lines[first_] - lines[first_ - 1], upper = lines[last_ + 1] - lines[last_];
-    // The fixed cell beyond each modifier (none at the domain's end).
-    const double beyond_lower = first_ >= 2 ? lines[first_ - 1] - lines[first_ - 2] : 0.0;
-    const double beyond_upper = last_ + 2 <= cells ? lines[last_ + 2] - lines[last_ + 1] : 0.0;
+    const int zone_top = static_cast<int>(offsets_.size()) - 1;  // the zone's top line, from first_
     std::vector<double> out = lines;
-    if (velocity < 0.0 && lower < (beyond_lower > 0.0 ? beyond_lower : lower + upper) / 3.0) {
-        // The lower modifier merges with the fixed cell below it; the upper one gets a line as far below its fixed
-        // line as the merged cell was wide (or halfway if it is not thick enough), so the count stays.
-        if (beyond_lower == 0.0)
-            throw RunFailure(key_ +
-                             ": the block's moving zone reached the domain's lower end (no fixed cell left "
-                             "below it to remove); extend the domain along its path");
-        double added = lines[last_ + 1] - beyond_lower;
-        if (added - lines[last_] < beyond_lower / 3.0) added = 0.5 * (lines[last_] + lines[last_ + 1]);
-        out.erase(out.begin() + (first_ - 1));
-        --first_;
+    if (velocity < 0.0) {
+        // The lower modifier merges with the fixed cell below it or, at the domain's end, with the zone's lowest cell
+        // (the zone compresses towards the wall, down to the block's own side: then the modifier is the gap).
+        const bool fixed_below = first_ >= 2, zone_below = hole_lower_ > 0;
+        if (!fixed_below && !zone_below) return std::nullopt;
+        const double beyond = fixed_below ? lines[first_ - 1] - lines[first_ - 2] : lines[first_ + 1] - lines[first_];
+        if (lines[first_] - lines[first_ - 1] >= beyond / 3.0) return std::nullopt;
+        // The upper modifier gets a line as far below its fixed line as the merged cell was wide (halfway if it is not
+        // thick enough), so the count stays.
+        double added = lines[last_ + 1] - beyond;
+        if (added - lines[last_] < beyond / 3.0) added = 0.5 * (lines[last_] + lines[last_ + 1]);
+        if (fixed_below) {
+            out.erase(out.begin() + (first_ - 1));
+            --first_;
+        } else {
+            out.erase(out.begin() + first_);
+            offsets_.erase(offsets_.begin());
+            --hole_lower_;
+            --hole_upper_;
+            ++trimmed_[0];
+        }
         --last_;
         out.insert(out.begin() + (last_ + 1), added);
-    } else if (velocity > 0.0 && upper < (beyond_upper > 0.0 ? beyond_upper : lower + upper) / 3.0) {
-        if (beyond_upper == 0.0)
-            throw RunFailure(key_ +
-                             ": the block's moving zone reached the domain's upper end (no fixed cell left "
-                             "above it to remove); extend the domain along its path");
-        double added = lines[first_ - 1] + beyond_upper;
-        if (lines[first_] - added < beyond_upper / 3.0) added = 0.5 * (lines[first_ - 1] + lines[first_]);
-        out.erase(out.begin() + (last_ + 1));
+    } else if (velocity > 0.0) {
+        const bool fixed_above = last_ + 2 <= cells, zone_above = hole_upper_ < zone_top;
+        if (!fixed_above && !zone_above) return std::nullopt;
+        const double beyond = fixed_above ? lines[last_ + 2] - lines[last_ + 1] : lines[last_] - lines[last_ - 1];
+        if (lines[last_ + 1] - lines[last_] >= beyond / 3.0) return std::nullopt;
+        double added = lines[first_ - 1] + beyond;
+        if (lines[first_] - added < beyond / 3.0) added = 0.5 * (lines[first_ - 1] + lines[first_]);
+        if (fixed_above) {
+            out.erase(out.begin() + (last_ + 1));
+        } else {
+            out.erase(out.begin() + last_);
+            offsets_.pop_back();
+            --last_;
+            ++trimmed_[1];
+        }
         out.insert(out.begin() + first_, added);
         ++first_;
         ++last_;
@@ -81,6 +102,17 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
     }
     ++changes_;
     return out;
+}
+
+void AxisLayers::trim(int below, int above) {
+    for (int k = 0; k < below; ++k) {
+        offsets_.erase(offsets_.begin());
+        --hole_lower_;
+        --hole_upper_;
+    }
+    for (int k = 0; k < above; ++k) offsets_.pop_back();
+    last_ = first_ + static_cast<int>(offsets_.size()) - 1;
+    trimmed_ = {trimmed_[0] + below, trimmed_[1] + above};
 }
 
 void AxisLayers::locate(const std::vector<double>& lines, double centre) {

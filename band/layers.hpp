@@ -16,9 +16,15 @@
 // of H / 3). The rigid zone is never remapped (its cells are only renumbered); the two modifiers are
 // (core/grid/remap.hpp).
 //
+// At a domain's end (a bed, a lid), with no fixed cell left beyond the modifier, the modifier merges with the zone's
+// outermost cell instead: the zone compresses towards the wall, down to the block's own side, where the modifier is
+// the gap between the wall and the block. The gap then closes by stretching; contact of a body_fitted body is not
+// built yet, and a block that reaches the wall stops the run with an error naming the key.
+//
 // The rigid zone is the block's window and its growth up to the far-field width: the lines from the innermost
 // cell of width H (to 1e-9) on each side, H the width of the outermost cell on that side (`domain.<axis>.max`
 // with spacing clustered gives such a grid); the modifier is the next cell out.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +55,10 @@ public:
     // from the body's final place).
     void locate(const std::vector<double>& lines, double centre);
     int changes() const { return changes_; }
+    // The zone's lines removed so far at its lower and upper end (it compresses towards a wall), and the same removal
+    // again on a zone built from the case (a restart).
+    std::array<int, 2> trimmed() const { return trimmed_; }
+    void trim(int below, int above);
     double far_width() const { return below_ < above_ ? below_ : above_; }  // the far-field cells' (the smaller side)
 
 private:
@@ -58,6 +68,7 @@ private:
     double below_ = 0.0, above_ = 0.0;     // the fixed cells' width H on each side
     std::string key_;
     int changes_ = 0;
+    std::array<int, 2> trimmed_{};
 };
 
 }  // namespace chute

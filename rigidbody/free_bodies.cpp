@@ -103,9 +103,12 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
         const std::optional<Eigen::Matrix2d> exact = carrier_.added_mass(f.index);
-        if (exact && f.impact)
+        // An exactly coupled body (body-fitted) at an impact: the rebound law sets its velocity, the obstacle takes
+        // the water's share of the impulse (contact.water_impulse `obstacle`), and body_moved() brings the water to the
+        // body's final velocity exactly. The carrier refuses `body` (the water's impulse given back to the block).
+        if (exact && f.impact && settings_.contact.water_impulse != WaterImpulse::obstacle)
             throw std::logic_error("FreeBodies::correct: an impact of body `" + body.name() +
-                                   "`, whose carrier couples it exactly, which has no impact law yet");
+                                   "`, coupled exactly, with contact.water_impulse other than `obstacle`");
         BodyLoads& out = loads_[f.index];
         const BodyLoads last_pass = out;
         out = BodyLoads{};

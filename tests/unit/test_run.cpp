@@ -239,7 +239,7 @@ TEST(Restart, BodyFittedLayersRestartEqualsStraightRun) {
         {"domain.y={start: -12.0, end: 4.0, spacing: clustered, core: [-1.0, 1.0], core_cells: 8, ratio: 1.2, "
          "max: 0.5}",
          "bodies.square.grid_motion=layers", "boundaries.bottom={type: wall}", "boundaries.top={type: wall}",
-         "time.end=1.5"});
+         "contact={distance: 0.1}", "time.end=1.5"});
     const auto [straight, stopped, resumed] = run_straight_and_restarted(config, straight_dir, split_dir, 30);
     EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
     int rank = 0;
