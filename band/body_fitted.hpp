@@ -110,7 +110,7 @@ private:
     std::array<long, 2> hierarchy_quantum_{};
     bool hierarchy_dirty_ = true;
     void refresh_hierarchy();
-    void compute_response();
+    void compute_response(bool warm = false);  // warm: the solves start from the last response
     void holes_found_again();  // after the lines changed: the blocks' cells, the solver's and the response
 };
 

@@ -177,7 +177,7 @@ std::array<double, 2> FlowSolver::solid_gradient_sum(const SolidBlock& b, const 
     return {m[0], m[1]};
 }
 
-FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block) {
+FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const HoleResponse* previous) {
     if (!solid_ || block >= solid_->blocks().size())
         throw std::logic_error("FlowSolver::hole_response: no solid block " + std::to_string(block));
     HoleResponse r;
@@ -189,7 +189,7 @@ FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block) {
         Velocity d(*grid_);
         unit.fill(d);
         divergence(*grid_, d, 1.0, source_);
-        Field2D phi(*grid_);
+        Field2D phi = previous ? previous->pressure[k] : Field2D(*grid_);
         poisson_->solve(source_, phi, poisson_residual_floor(d, 1.0));
         halo_->exchange(phi);
         bc_->apply_pressure(phi);

@@ -124,7 +124,8 @@ public:
         std::array<Velocity, 2> velocity;
         std::array<Field2D, 2> pressure;
     };
-    HoleResponse hole_response(std::size_t block);
+    // `previous`: a response on a nearby grid (the lines stretched a little), the solves' starting guess.
+    HoleResponse hole_response(std::size_t block, const HoleResponse* previous = nullptr);
     // The step's u^{n+1} and p^{n+1/2} changed by the response to dU = `change`, the solid cells already holding
     // the block's new velocity (their faces are filled from it). Collective.
     void add_hole_response(const HoleResponse& response, std::array<double, 2> change, double dt);
