@@ -101,6 +101,53 @@ TEST(Layers, ConveyLinesAcrossALongTravelBothWays) {
 
 namespace {
 
+// A zone of y lines (the window [-0.5, 0.5] and its growth) driven through a flow solver as a free body's grid is:
+// a layer change when one is due (the flow remapped and projected), then a step whose lines move twice, to the
+// predicted place before the projection (0.9 w dt) and further after it (0.2 w dt), more than the fluxes' AB2 grid
+// velocity counted; the zone accelerates by `growth` per step.
+class ZoneDriver {
+public:
+    ZoneDriver(FlowSolver& solver, double velocity, double growth)
+        : s_(solver),
+          x_(solver.grid().x_axis().lines()),
+          layers_(solver.grid().y_axis().lines(), 0.0, index_of(solver.grid().y_axis().lines(), -0.5),
+                  index_of(solver.grid().y_axis().lines(), 0.5), "test"),
+          w_(velocity),
+          growth_(growth) {
+        set_motion();
+    }
+    const AxisLayers& layers() const { return layers_; }
+    // One step; on_change(kinetic energy before and after the change's projection) runs after a layer change.
+    template <class OnChange>
+    void step(OnChange&& on_change) {
+        if (auto changed = layers_.change(s_.grid().y_axis().lines(), w_)) {
+            s_.change_grid_lines(x_, *changed);
+            const std::array<double, 2> energy = s_.project_after_change();
+            on_change(energy);
+            set_motion();
+        }
+        const double dt = s_.predict(0.01);
+        centre_ += 0.9 * w_ * dt;
+        s_.stretch_grid_lines(x_, layers_.stretched(s_.grid().y_axis().lines(), centre_));
+        s_.project();
+        centre_ += 0.2 * w_ * dt;
+        s_.stretch_grid_lines(x_, layers_.stretched(s_.grid().y_axis().lines(), centre_));
+        w_ *= growth_;
+        set_motion();
+    }
+
+private:
+    void set_motion() {
+        GridMotion m;
+        m.axis[1] = {layers_.first(), layers_.last(), w_};
+        s_.set_grid_motion(m);
+    }
+    FlowSolver& s_;
+    std::vector<double> x_;
+    AxisLayers layers_;
+    double centre_ = 0.0, w_, growth_;
+};
+
 // Water moving uniformly at (U, V) upwards through a domain periodic in x with inflow below and an outflow above;
 // a rigid zone of y lines travels down at w through it, its modifiers stretching and changing. Returns the largest
 // departure from the uniform current over the run, relative to |U|, and the changes made.
@@ -117,33 +164,10 @@ std::pair<double, int> uniform_current_through_layers(double w) {
     c.convection = ConvectionScheme::van_leer;
     c.poisson_tolerance = 1e-12;
     FlowSolver s(c, MPI_COMM_WORLD);
-    const std::vector<double> x = s.grid().x_axis().lines();
-    std::vector<double> y = s.grid().y_axis().lines();
-    double centre = 0.0;
-    AxisLayers layers(y, centre, index_of(y, -0.5), index_of(y, 0.5), "test");
-    auto set_motion = [&] {
-        GridMotion m;
-        m.axis[1] = {layers.first(), layers.last(), w};
-        s.set_grid_motion(m);
-    };
-    set_motion();
+    ZoneDriver zone(s, w, 1.001);
     double worst = 0.0;
     for (int n = 0; n < 200; ++n) {
-        if (auto changed = layers.change(s.grid().y_axis().lines(), w)) {
-            s.change_grid_lines(x, *changed);
-            s.project_after_change();
-            set_motion();
-        }
-        // The zone accelerates, and moves twice in a step as a free body's does (to its predicted place before
-        // the projection, to its final one after), by more than the fluxes' AB2 grid velocity counted.
-        const double dt = s.predict(0.01);
-        centre += 0.9 * w * dt;
-        s.stretch_grid_lines(x, layers.stretched(s.grid().y_axis().lines(), centre));
-        s.project();
-        centre += 0.2 * w * dt;
-        s.stretch_grid_lines(x, layers.stretched(s.grid().y_axis().lines(), centre));
-        w *= 1.001;
-        set_motion();
+        zone.step([](std::array<double, 2>) {});
         double m = 0.0;
         for (int j = 0; j < s.grid().ny(); ++j)
             for (int i = 0; i < s.grid().nx(); ++i) {
@@ -153,7 +177,7 @@ std::pair<double, int> uniform_current_through_layers(double w) {
         MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, s.grid().comm());
         worst = std::max(worst, m);
     }
-    return {worst / U, layers.changes()};
+    return {worst / U, zone.layers().changes()};
 }
 
 }  // namespace
@@ -212,38 +236,18 @@ TEST(Layers, PeriodicBoxKeepsMassAndMomentumAcrossTopologyChanges) {
         }
     s.refresh_ghosts();
     s.project_start();
-    const std::vector<double> x = s.grid().x_axis().lines();
-    double centre = 0.0;
-    double w = -1.2;
-    std::vector<double> y = s.grid().y_axis().lines();
-    AxisLayers layers(y, centre, index_of(y, -0.5), index_of(y, 0.5), "test");
-    auto set_motion = [&] {
-        GridMotion m;
-        m.axis[1] = {layers.first(), layers.last(), w};
-        s.set_grid_motion(m);
-    };
-    set_motion();
+    ZoneDriver zone(s, -1.2, 1.002);
+    const AxisLayers& layers = zone.layers();
     const std::array<double, 2> start = momentum(s);
     double remap_error = 0.0, divergence_after = 0.0, energy_change = 0.0;
     for (int n = 0; n < 280; ++n) {
-        if (auto changed = layers.change(s.grid().y_axis().lines(), w)) {
-            const std::array<double, 2> before = momentum(s);
-            s.change_grid_lines(x, *changed);
-            const std::array<double, 2> e = s.project_after_change();
+        const std::array<double, 2> before = momentum(s);
+        zone.step([&](std::array<double, 2> e) {
             const std::array<double, 2> after = momentum(s);
             remap_error = std::max({remap_error, std::abs(after[0] - before[0]), std::abs(after[1] - before[1])});
             divergence_after = std::max(divergence_after, max_divergence(s.grid(), s.velocity()));
             energy_change = std::max(energy_change, std::abs(e[1] - e[0]) / e[0]);
-            set_motion();
-        }
-        const double dt = s.predict(0.01);
-        centre += 0.9 * w * dt;
-        s.stretch_grid_lines(x, layers.stretched(s.grid().y_axis().lines(), centre));
-        s.project();
-        centre += 0.2 * w * dt;
-        s.stretch_grid_lines(x, layers.stretched(s.grid().y_axis().lines(), centre));
-        w *= 1.002;
-        set_motion();
+        });
     }
     const std::array<double, 2> end = momentum(s);
     const double scale = 0.3 * 22.0;  // |momentum| of the drift
