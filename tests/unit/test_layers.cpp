@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "axis.hpp"
 #include "body_fitted.hpp"
@@ -404,4 +405,41 @@ TEST(Layers, RefusesWhatItCannotTakeNamingTheKey) {
     EXPECT_EQ(refusal({}).rfind("contact.distance:", 0), 0u) << refusal({});
     EXPECT_EQ(refusal({"contact={distance: 0.1, water_impulse: body}"}).rfind("contact.water_impulse:", 0), 0u);
     EXPECT_EQ(refusal({"contact={distance: 0.1}"}), "");
+}
+
+// The study's slopes as it ran them: a horizontal bed with gravity tilted by the slope angle (45 degrees), the
+// square free along x and y, modifier layers on both axes (four modifiers). It slides down-slope through layer
+// changes along x while it falls through those along y, meets the bed at the gap and rebounds by the law (normal
+// Rn 0.5, tangential Rt 0.8). Laminar, 30 x 21 cells.
+TEST(Layers, TiltedGravityMovesTheSquareAlongBothAxes) {
+    CaseConfig config = parse_case_text(
+        falling_square_case(16, 32),
+        {"domain.x={start: -4.0, end: 8.0, spacing: clustered, core: [-1.0, 1.0], core_cells: 8, ratio: 1.2, max: 0.5}",
+         "domain.y={start: -3.5, end: 4.0, spacing: clustered, core: [-1.0, 1.0], core_cells: 8, ratio: 1.2, max: 0.5}",
+         "gravity=[6.937, -6.937]", "bodies.square.grid_motion=layers",
+         "bodies.square.motion={type: free, lock_rotation: true}", "boundaries.bottom={type: wall}",
+         "boundaries.top={type: wall}", "time.end=2.5",
+         "contact={law: lumped, normal_restitution: 0.5, tangential_restitution: 0.8, distance: 0.1}"});
+    Model model(config, MPI_COMM_WORLD);
+    const auto& band = dynamic_cast<const BodyFitted&>(model.carrier());
+    std::optional<ContactEvent> impact;
+    while (model.flow().time() < config.end_time - 1e-12 && !impact) {
+        take_step(model, model.stable_dt());
+        for (const ContactEvent& e : model.free_bodies().events())
+            if (!e.rests && !impact) impact = e;
+    }
+    ASSERT_TRUE(impact.has_value());
+    const BodyState& s = model.carrier().bodies()[0].state();
+    std::printf("tilted gravity: impact at (%.3f, %.3f) m/s -> (%.3f, %.3f), %d / %d layer changes along x / y, the "
+                "square at x = %.3f\n",
+                impact->velocity_before.x(), impact->velocity_before.y(), impact->velocity_after.x(),
+                impact->velocity_after.y(), band.layer_changes()[0], band.layer_changes()[1], s.centre.x());
+    EXPECT_GE(band.layer_changes()[0], 4);
+    EXPECT_GE(band.layer_changes()[1], 4);
+    EXPECT_GT(impact->velocity_before.x(), 1.0);  // it slid down-slope before it hit
+    EXPECT_NEAR(impact->velocity_after.x(), 0.8 * impact->velocity_before.x(), 1e-9);
+    EXPECT_NEAR(impact->velocity_after.y(), -0.5 * impact->velocity_before.y(), 1e-9);
+    EXPECT_LT(max_divergence(model.flow().grid(), model.flow().velocity(), model.flow().fluid_cells()) *
+                  model.flow().previous_dt(),
+              1e-6);
 }
