@@ -31,7 +31,10 @@ TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu
             const double uc = std::max(std::abs(vel.u(i, j) - w0), std::abs(vel.u(i + 1, j) - w1));
             const double vc = std::max(std::abs(vel.v(i, j) - s0), std::abs(vel.v(i, j + 1) - s1));
             const double ix = 1.0 / X.w(i), iy = 1.0 / Y.w(j);
-            rate[0] = std::max(rate[0], uc * ix + vc * iy);
+            // A cell whose faces move apart or together (a modifier layer) changes by at most `cfl` of its width in
+            // a step: it cannot close within one (band/layers.hpp changes it at the next step).
+            const double deformation = std::abs(w1 - w0) * ix + std::abs(s1 - s0) * iy;
+            rate[0] = std::max(rate[0], uc * ix + vc * iy + deformation);
             rate[1] = std::max(rate[1], nu * (ix * ix + iy * iy));
         }
     MPI_Allreduce(MPI_IN_PLACE, rate, 2, MPI_DOUBLE, MPI_MAX, grid.comm());

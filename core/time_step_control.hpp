@@ -19,7 +19,7 @@ double max_inverse_square_spacing(const Grid& grid);
 
 // Global (all ranks) limits for the current velocity.
 // `lines`: the velocities of moving grid lines (a body-fitted grid, core/grid/grid_motion.hpp); the convective
-// limit takes |u - w| at each face.
+// limit takes |u - w| at each face and the rate at which a stretching cell's faces approach each other.
 TimeStepLimits time_step_limits(const Grid& grid, const Velocity& vel, double nu, double cfl, double diffusion_number,
                                 const LineVelocities* lines = nullptr);
 

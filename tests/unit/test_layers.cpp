@@ -430,10 +430,11 @@ TEST(Layers, TiltedGravityMovesTheSquareAlongBothAxes) {
     }
     ASSERT_TRUE(impact.has_value());
     const BodyState& s = model.carrier().bodies()[0].state();
-    std::printf("tilted gravity: impact at (%.3f, %.3f) m/s -> (%.3f, %.3f), %d / %d layer changes along x / y, the "
-                "square at x = %.3f\n",
-                impact->velocity_before.x(), impact->velocity_before.y(), impact->velocity_after.x(),
-                impact->velocity_after.y(), band.layer_changes()[0], band.layer_changes()[1], s.centre.x());
+    std::printf(
+        "tilted gravity: impact at (%.3f, %.3f) m/s -> (%.3f, %.3f), %d / %d layer changes along x / y, the "
+        "square at x = %.3f\n",
+        impact->velocity_before.x(), impact->velocity_before.y(), impact->velocity_after.x(),
+        impact->velocity_after.y(), band.layer_changes()[0], band.layer_changes()[1], s.centre.x());
     EXPECT_GE(band.layer_changes()[0], 4);
     EXPECT_GE(band.layer_changes()[1], 4);
     EXPECT_GT(impact->velocity_before.x(), 1.0);  // it slid down-slope before it hit
