@@ -64,13 +64,7 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
 // gap, which must stay open (contact at contact.distance), and the rebound law acts with the obstacle taking the
 // water's share (the exact coupling then brings the water to the block's velocity).
 void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const {
-    const bool wall = [&] {
-        for (int s = 2 * axis; s < 2 * axis + 2; ++s)
-            if (settings_.boundaries[s] == BoundaryType::wall || settings_.boundaries[s] == BoundaryType::slip)
-                return true;
-        return false;
-    }();
-    if (!wall || !body.free()) return;
+    if (wall_across(axis) < 0 || !body.free()) return;
     if (!(settings_.contact_distance > 0.0))
         throw std::invalid_argument(
             "contact.distance: the body_fitted body `" + body.name() +
@@ -79,6 +73,12 @@ void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const
     if (settings_.water_impulse_on_body)
         throw std::invalid_argument("contact.water_impulse: `body` is not built for a body_fitted body (`" +
                                     body.name() + "`); use `obstacle`");
+}
+
+int BodyFitted::wall_across(int axis) const {
+    for (int s = 2 * axis; s < 2 * axis + 2; ++s)
+        if (settings_.boundaries[s] == BoundaryType::wall || settings_.boundaries[s] == BoundaryType::slip) return s;
+    return -1;
 }
 
 bool BodyFitted::moves_along(const Body& body, int axis) const {
@@ -90,17 +90,13 @@ bool BodyFitted::moves_along(const Body& body, int axis) const {
 void BodyFitted::refuse_walls_across_motion(const Body& body) const {
     static const char* const side_names[4] = {"left", "right", "bottom", "top"};
     for (int axis = 0; axis < 2; ++axis) {
-        if (!moves_along(body, axis)) continue;
-        for (int s = 2 * axis; s < 2 * axis + 2; ++s) {
-            const BoundaryType type = settings_.boundaries[s];
-            if (type != BoundaryType::wall && type != BoundaryType::slip) continue;
-            throw std::invalid_argument(std::string("boundaries.") + side_names[s] +
-                                        ".type: a wall across the motion of the body_fitted body `" + body.name() +
-                                        "`, which carries the grid (and its boundaries) along " +
-                                        (axis == 0 ? "x" : "y") +
-                                        ": use inflow (water at rest) ahead and outflow behind" +
-                                        (body.free() ? std::string(", or lock ") + (axis == 0 ? "x" : "y") : ""));
-        }
+        const int s = moves_along(body, axis) ? wall_across(axis) : -1;
+        if (s < 0) continue;
+        throw std::invalid_argument(std::string("boundaries.") + side_names[s] +
+                                    ".type: a wall across the motion of the body_fitted body `" + body.name() +
+                                    "`, which carries the grid (and its boundaries) along " + (axis == 0 ? "x" : "y") +
+                                    ": use inflow (water at rest) ahead and outflow behind" +
+                                    (body.free() ? std::string(", or lock ") + (axis == 0 ? "x" : "y") : ""));
     }
 }
 
@@ -238,7 +234,6 @@ void BodyFitted::restored(const NamedArrays& arrays) {
     solid_.set_velocity(static_cast<std::size_t>(carrying_), {s.velocity.x(), s.velocity.y()});
     // The blocks where the zones are; a free body's response on the grid it was computed on (the lines at the last
     // layer change), as the straight run holds it.
-    lines_restored_ = true;
     const std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
     const std::array<double, 2> at_change = {response->second[0], response->second[1]};
     if (response_ && at_change != zone_centre_) {
@@ -248,12 +243,11 @@ void BodyFitted::restored(const NamedArrays& arrays) {
         zone_centre_ = at_change;
         holes_found_again();
         zone_centre_ = now;
-        flow_->set_grid_lines(x, y, true);
-        flow_->set_solid_cells(&solid_);
+        flow_->set_grid_lines(x, y, true);  // the matrix rebuilt on the checkpoint's lines, the same solid cells
     } else {
         holes_found_again();
     }
-    lines_restored_ = true;  // the place() after the restore keeps the lines too
+    lines_restored_ = true;  // the place() after the restore keeps the checkpoint's lines
 }
 
 std::array<int, 2> BodyFitted::layer_changes() const {

@@ -116,9 +116,11 @@ PoissonSolver::~PoissonSolver() {
 }
 
 void PoissonSolver::destroy_solver() {
-    if (pfmg_) null_spaces().erase(pfmg_);
-    if (hierarchy_matrix_) HYPRE_StructMatrixDestroy(hierarchy_matrix_);
-    hierarchy_matrix_ = nullptr;
+    if (pfmg_) {
+        // The matrix the hierarchy was set up on, when PCG's had moved on (update_coefficients).
+        if (HYPRE_StructMatrix kept = null_spaces().at(pfmg_).hierarchy_matrix) HYPRE_StructMatrixDestroy(kept);
+        null_spaces().erase(pfmg_);
+    }
     if (pcg_) HYPRE_StructPCGDestroy(pcg_);
     if (pfmg_ && smg_)
         HYPRE_StructSMGDestroy(pfmg_);
@@ -196,11 +198,10 @@ void PoissonSolver::update_coefficients() {
     if (ns.hierarchy_matrix)
         HYPRE_StructMatrixDestroy(matrix_);
     else
-        ns.hierarchy_matrix = hierarchy_matrix_ = matrix_;
+        ns.hierarchy_matrix = matrix_;
     matrix_ = new_matrix();
     HYPRE_StructPCGSetPrecond(pcg_, smg_ ? smg_zero_mean : pfmg_zero_mean, keep_hierarchy, pfmg_);
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
-    ++coefficient_updates_;
 }
 
 void PoissonSolver::update_matrix() {
@@ -208,7 +209,6 @@ void PoissonSolver::update_matrix() {
     destroy_solver();
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
     matrix_ = fresh;
-    coefficient_updates_ = 0;
     HYPRE_StructPCGCreate(grid_.comm(), &pcg_);
     HYPRE_StructPCGSetTol(pcg_, tolerance_);
     HYPRE_StructPCGSetMaxIter(pcg_, max_iterations_);

@@ -39,9 +39,8 @@ public:
     void update_matrix();
     // Only the matrix's coefficients (after lines moved a little: a modifier layer stretching): PCG solves the new
     // matrix, preconditioned by the multigrid cycle of the last update_matrix()'s (a fixed preconditioner of a
-    // nearby matrix), which saves the hierarchy's setup. How many since the last update_matrix():
+    // nearby matrix), which saves the hierarchy's setup.
     void update_coefficients();
-    int coefficient_updates() const { return coefficient_updates_; }
     // Leave the cells where `fluid` is 0 out of the problem (null: none); `fluid_cells` counts the others over
     // all ranks. Rebuilds the matrix; the field must outlive the solver or the next call.
     void set_fluid_cells(const Field2D* fluid, long long fluid_cells);
@@ -54,8 +53,6 @@ private:
     void destroy_solver();
     std::vector<double> matrix_values() const;
     HYPRE_StructMatrix new_matrix() const;
-    HYPRE_StructMatrix hierarchy_matrix_ = nullptr;  // the matrix the cycle was set up on, once PCG's moved on
-    int coefficient_updates_ = 0;
 
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;
