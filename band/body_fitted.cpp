@@ -255,15 +255,15 @@ std::array<int, 2> BodyFitted::layer_changes() const {
 }
 
 void BodyFitted::refresh_hierarchy() {
-    std::array<long, 2> quantum{};
-    for (int axis = 0; axis < 2; ++axis)
-        if (layers_[axis]) quantum[axis] = std::lround(zone_centre_[axis] / (0.25 * layers_[axis]->far_width()));
-    if (!hierarchy_dirty_ && quantum == hierarchy_quantum_) return;
     std::vector<double> x = grid_.x_axis().lines(), y = grid_.y_axis().lines();
-    if (layers_[0]) x = layers_[0]->stretched(x, quantum[0] * 0.25 * layers_[0]->far_width());
-    if (layers_[1]) y = layers_[1]->stretched(y, quantum[1] * 0.25 * layers_[1]->far_width());
+    std::array<double, 2> centre{};
+    for (int axis = 0; axis < 2; ++axis)
+        if (layers_[axis]) centre[axis] = layers_[axis]->hierarchy_centre(axis == 0 ? x : y, zone_centre_[axis]);
+    if (!hierarchy_dirty_ && centre == hierarchy_centre_) return;
+    if (layers_[0]) x = layers_[0]->stretched(x, centre[0]);
+    if (layers_[1]) y = layers_[1]->stretched(y, centre[1]);
     flow_->set_up_pressure_hierarchy(std::move(x), std::move(y));
-    hierarchy_quantum_ = quantum;
+    hierarchy_centre_ = centre;
     hierarchy_dirty_ = false;
 }
 

@@ -106,9 +106,9 @@ private:
     // With layers: where the rigid zones were centred last (the lines' place), and where they were when the free
     // body's response was computed (at the last layer change; a restart recomputes it there, bit for bit).
     std::array<double, 2> zone_centre_{}, response_centre_{};
-    // The pressure solver's multigrid hierarchy is set up on the zone at a quantized place (a quarter of the
-    // far-field cell), again when the zone passes to the next quantum or the cells changed: a restart finds it.
-    std::array<long, 2> hierarchy_quantum_{};
+    // The pressure solver's multigrid hierarchy is set up on the zone at a quantized place (AxisLayers::
+    // hierarchy_centre), again when the zone passes to the next one or the cells changed: a restart finds it.
+    std::array<double, 2> hierarchy_centre_{};
     bool hierarchy_dirty_ = true;
     void refresh_hierarchy();
     void compute_response(bool warm = false);  // warm: the solves start from the last response

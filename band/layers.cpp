@@ -104,6 +104,19 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
     return out;
 }
 
+double AxisLayers::hierarchy_centre(const std::vector<double>& lines, double centre) const {
+    const double rounded = std::round(centre / (0.25 * far_width()));
+    // Both modifiers open, at least a tenth of the smaller of their widths now (the cycle is set up on a nearby grid).
+    const double now = std::min(lines[first_] - lines[first_ - 1], lines[last_ + 1] - lines[last_]);
+    auto keeps_open = [&](double c) {
+        return c + offsets_.front() - lines[first_ - 1] >= 0.1 * now &&
+               lines[last_ + 1] - (c + offsets_.back()) >= 0.1 * now;
+    };
+    for (double shift : {0.0, 1.0, -1.0})
+        if (keeps_open((rounded + shift) * 0.25 * far_width())) return (rounded + shift) * 0.25 * far_width();
+    return centre;
+}
+
 void AxisLayers::trim(int below, int above) {
     for (int k = 0; k < below; ++k) {
         offsets_.erase(offsets_.begin());

@@ -54,6 +54,11 @@ public:
     // (to a quarter of the smallest cell: the lines are where the step was projected, a fraction of a step's travel
     // from the body's final place).
     void locate(const std::vector<double>& lines, double centre);
+    // Where the pressure solver's multigrid hierarchy is set up for a zone centred on `centre` (a preconditioner of the
+    // nearby matrices; a restart finds the same place): the centre rounded to a quarter of the far-field width, or the
+    // next quarter over when the rounding would close a thin modifier (near a wall the modifier is the gap, down to a
+    // third of the zone's finest cell); the centre itself if neither keeps both open.
+    double hierarchy_centre(const std::vector<double>& lines, double centre) const;
     int changes() const { return changes_; }
     // The zone's lines removed so far at its lower and upper end (it compresses towards a wall), and the same removal
     // again on a zone built from the case (a restart).

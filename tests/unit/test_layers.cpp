@@ -100,6 +100,40 @@ TEST(Layers, ConveyLinesAcrossALongTravelBothWays) {
     EXPECT_NEAR(centre - 0.5, lines[0], 0.011);      // the block's side within a step of the bed
 }
 
+// The pressure solver's multigrid hierarchy is set up with the zone at a quantized place (a quarter of the far-field
+// width; a restart finds it again). Near a wall the modifier is the gap, as thin as a third of the zone's finest cell
+// (here 0.1 / 3 against a quarter of 0.25): the plain rounding would close it (the fine bed bounce stopped with "moved
+// through a whole modifier layer" that way); the place keeps both modifiers open all the way down to the bed.
+TEST(Layers, HierarchyPlaceKeepsTheModifiersOpenDownToTheBed) {
+    std::vector<double> lines = window_lines(-3.0, 4.0);
+    double centre = 0.0;
+    AxisLayers layers(lines, centre, index_of(lines, -0.5), index_of(lines, 0.5), "test");
+    const double quarter = 0.25 * layers.far_width();
+    int rounding_would_close = 0, steps = 0;
+    try {
+        for (; steps < 1000; ++steps) {
+            if (auto changed = layers.change(lines, -1.0)) lines = *changed;
+            centre -= 0.01;
+            lines = layers.stretched(lines, centre);
+            const double place = layers.hierarchy_centre(lines, centre);
+            ASSERT_LE(std::abs(place - centre), 1.5 * quarter);
+            ASSERT_NEAR(place / quarter, std::round(place / quarter), 1e-9);  // on a quarter: a restart finds it
+            const std::vector<double> at_place = layers.stretched(lines, place);
+            for (std::size_t k = 0; k + 1 < at_place.size(); ++k) ASSERT_GT(at_place[k + 1], at_place[k]);
+            try {
+                (void)layers.stretched(lines, std::round(centre / quarter) * quarter);
+            } catch (const RunFailure&) {
+                ++rounding_would_close;
+            }
+        }
+    } catch (const RunFailure& e) {
+        EXPECT_NE(std::string(e.what()).find("reached the domain's lower end"), std::string::npos) << e.what();
+    }
+    EXPECT_GT(layers.trimmed()[0], 0);
+    EXPECT_GT(steps, 200);
+    EXPECT_GT(rounding_would_close, 0);  // the case the place guards against happened
+}
+
 namespace {
 
 // A zone of y lines (the window [-0.5, 0.5] and its growth) driven through a flow solver as a free body's grid is:
