@@ -195,10 +195,17 @@ HYPRE_StructMatrix PoissonSolver::new_matrix() const {
 void PoissonSolver::update_coefficients() {
     if (!matrix_ || !pcg_) return update_matrix();
     NullSpace& ns = null_spaces().at(pfmg_);
-    if (ns.hierarchy_matrix)
-        HYPRE_StructMatrixDestroy(matrix_);
-    else
-        ns.hierarchy_matrix = matrix_;
+    if (ns.hierarchy_matrix) {
+        // PCG's own matrix already: the same grid and stencil, new values in place (PCG's setup, its vectors and the
+        // matrix-vector product's communication, stays valid).
+        std::vector<double> values = matrix_values();
+        int entries[5] = {0, 1, 2, 3, 4};
+        std::array<int, 2> lower = lower_, upper = upper_;
+        HYPRE_StructMatrixSetBoxValues(matrix_, lower.data(), upper.data(), 5, entries, values.data());
+        HYPRE_StructMatrixAssemble(matrix_);
+        return;
+    }
+    ns.hierarchy_matrix = matrix_;
     matrix_ = new_matrix();
     HYPRE_StructPCGSetPrecond(pcg_, smg_ ? smg_zero_mean : pfmg_zero_mean, keep_hierarchy, pfmg_);
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
