@@ -48,4 +48,10 @@ grep -q '^| terminal speed, mean t >= 1.5 s (m/s) | [0-9.]* | [0-9.]* ([-+][0-9.
 "$root/scripts/compare.sh" "$work/out" translate="$work/translate.yaml" layers="$work/layers.yaml" > "$work/second.txt"
 ! grep -q '^compare: running' "$work/second.txt" || { echo "the finished runs were made again"; exit 1; }
 grep -q 'terminal speed' "$work/second.txt"
+# A run may change its case's keys: a denser square (3000 against 2500 kg/m^3) falls faster.
+"$root/scripts/compare.sh" "$work/out" layers="$work/layers.yaml" \
+  "denser=$work/layers.yaml --set bodies.square.density=3000.0" > "$work/third.txt"
+grep -q '^#   bodies.square.density=3000.0$' "$work/out/denser/case.yaml" || { echo "the --set did not reach the run"; exit 1; }
+grep -q '^| terminal speed, mean t >= 1.5 s (m/s) | [0-9.]* | [0-9.]* (+[0-9.]* %) |$' "$work/out/compare.md" ||
+  { echo "the denser square does not fall faster:"; cat "$work/out/compare.md"; exit 1; }
 echo "compare_script: ok"; grep 'terminal speed' "$work/out/compare.md"
