@@ -110,7 +110,9 @@ void BodyFitted::attach(FlowSolver& flow) {
 // The flow's response to the free body's velocity on the grid as it is (band/body_fitted.hpp), and its added mass.
 void BodyFitted::compute_response(bool warm) {
     response_centre_ = zone_centre_;
-    response_ = flow_->hole_response(static_cast<std::size_t>(carrying_), warm ? &*response_ : nullptr);
+    const Body& body = bodies_[carrying_];
+    response_ = flow_->hole_response(static_cast<std::size_t>(carrying_), warm ? &*response_ : nullptr,
+                                     {moves_along(body, 0), moves_along(body, 1)});
     const SolidBlock& block = solid_.blocks()[carrying_];
     added_mass_.setZero();
     const double rd = settings_.density * settings_.depth;

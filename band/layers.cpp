@@ -105,7 +105,11 @@ std::optional<std::vector<double>> AxisLayers::change(const std::vector<double>&
 }
 
 double AxisLayers::hierarchy_centre(const std::vector<double>& lines, double centre) const {
-    const double rounded = std::round(centre / (0.25 * far_width()));
+    // Far from walls a whole far-field cell: the hierarchy is set up a quarter as often as with a quarter cell, for
+    // 6.0 PCG iterations per step against 5.8 (the study's free fall). Near a wall (the zone compressed) a quarter:
+    // the gap is the cell that stretches, and a whole cell there took 7.3 against 5.7 (the bed bounce).
+    const double quantum = (trimmed_[0] + trimmed_[1] > 0 ? 0.25 : 1.0) * far_width();
+    const double rounded = std::round(centre / quantum);
     // Both modifiers open, at least a tenth of the smaller of their widths now (the cycle is set up on a nearby grid).
     const double now = std::min(lines[first_] - lines[first_ - 1], lines[last_ + 1] - lines[last_]);
     auto keeps_open = [&](double c) {
@@ -113,7 +117,7 @@ double AxisLayers::hierarchy_centre(const std::vector<double>& lines, double cen
                lines[last_ + 1] - (c + offsets_.back()) >= 0.1 * now;
     };
     for (double shift : {0.0, 1.0, -1.0})
-        if (keeps_open((rounded + shift) * 0.25 * far_width())) return (rounded + shift) * 0.25 * far_width();
+        if (keeps_open((rounded + shift) * quantum)) return (rounded + shift) * quantum;
     return centre;
 }
 

@@ -55,9 +55,10 @@ public:
     // from the body's final place).
     void locate(const std::vector<double>& lines, double centre);
     // Where the pressure solver's multigrid hierarchy is set up for a zone centred on `centre` (a preconditioner of the
-    // nearby matrices; a restart finds the same place): the centre rounded to a quarter of the far-field width, or the
-    // next quarter over when the rounding would close a thin modifier (near a wall the modifier is the gap, down to a
-    // third of the zone's finest cell); the centre itself if neither keeps both open.
+    // nearby matrices; a restart finds the same place): the centre rounded to the far-field width (a quarter of it once
+    // the zone compresses against a wall), or to the next place over when the rounding would close a thin modifier
+    // (near a wall the modifier is the gap, down to a third of the zone's finest cell); the centre itself if neither
+    // keeps both open.
     double hierarchy_centre(const std::vector<double>& lines, double centre) const;
     int changes() const { return changes_; }
     // The zone's lines removed so far at its lower and upper end (it compresses towards a wall), and the same removal

@@ -177,11 +177,13 @@ std::array<double, 2> FlowSolver::solid_gradient_sum(const SolidBlock& b, const 
     return {m[0], m[1]};
 }
 
-FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const HoleResponse* previous) {
+FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const HoleResponse* previous,
+                                                   std::array<bool, 2> along) {
     if (!solid_ || block >= solid_->blocks().size())
         throw std::logic_error("FlowSolver::hole_response: no solid block " + std::to_string(block));
-    HoleResponse r;
+    HoleResponse r{{Velocity(*grid_), Velocity(*grid_)}, {Field2D(*grid_), Field2D(*grid_)}};
     for (int k = 0; k < 2; ++k) {
+        if (!along[k]) continue;
         // The sides of `block` moving at e_k, everything else at rest: the source the projection sees.
         SolidCells unit = *solid_;
         for (std::size_t b = 0; b < unit.blocks().size(); ++b) unit.set_velocity(b, {0.0, 0.0});

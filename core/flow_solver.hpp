@@ -124,8 +124,10 @@ public:
         std::array<Velocity, 2> velocity;
         std::array<Field2D, 2> pressure;
     };
-    // `previous`: a response on a nearby grid (the lines stretched a little), the solves' starting guess.
-    HoleResponse hole_response(std::size_t block, const HoleResponse* previous = nullptr);
+    // `previous`: a response on a nearby grid (the lines stretched a little), the solves' starting guess. `along`:
+    // the directions to solve for (a body locked along the other leaves its response there zero: one solve, not two).
+    HoleResponse hole_response(std::size_t block, const HoleResponse* previous = nullptr,
+                               std::array<bool, 2> along = {true, true});
     // The step's u^{n+1} and p^{n+1/2} changed by the response to dU = `change`, the solid cells already holding
     // the block's new velocity (their faces are filled from it). Collective.
     void add_hole_response(const HoleResponse& response, std::array<double, 2> change, double dt);
