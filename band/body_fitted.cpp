@@ -61,8 +61,8 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
 // The grid moves with the body along the axes it moves along (a free body's unlocked ones, a prescribed body's
 // with a velocity, amplitude or acceleration there): the boundaries across them would move too.
 // A body with layers can meet a wall across its motion: the layers between are removed until the modifier is the
-// gap, which must stay open (contact at contact.distance), and the rebound law acts with the obstacle taking the
-// water's share (the exact coupling then brings the water to the block's velocity).
+// gap, which must stay open (contact at contact.distance); the rebound law acts with either treatment of the water's
+// impulse (contact.water_impulse), and the exact coupling brings the water to the block's velocity.
 void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const {
     if (wall_across(axis) < 0 || !body.free()) return;
     if (!(settings_.contact_distance > 0.0))
@@ -70,9 +70,6 @@ void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const
             "contact.distance: the body_fitted body `" + body.name() +
             "` with grid_motion layers can reach a wall across its motion, and meets it at a gap that its last layer "
             "fills: set a gap > 0 (the block's first cell, or the study's 0.1 m)");
-    if (settings_.water_impulse_on_body)
-        throw std::invalid_argument("contact.water_impulse: `body` is not built for a body_fitted body (`" +
-                                    body.name() + "`); use `obstacle`");
 }
 
 int BodyFitted::wall_across(int axis) const {

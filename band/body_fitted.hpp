@@ -40,7 +40,6 @@ struct BodyFittedSettings {
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
     std::array<BoundaryType, 4> boundaries{};                // left, right, bottom, top
     double contact_distance = 0.0;                           // contact.distance (m)
-    bool water_impulse_on_body = false;                      // contact.water_impulse `body`
 };
 
 class BodyFitted final : public Carrier {

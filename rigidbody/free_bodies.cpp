@@ -103,12 +103,9 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
         const std::optional<Eigen::Matrix2d> exact = carrier_.added_mass(f.index);
-        // An exactly coupled body (body-fitted) at an impact: the rebound law sets its velocity, the obstacle takes
-        // the water's share of the impulse (contact.water_impulse `obstacle`), and body_moved() brings the water to the
-        // body's final velocity exactly. The carrier refuses `body` (the water's impulse given back to the block).
-        if (exact && f.impact && settings_.contact.water_impulse != WaterImpulse::obstacle)
-            throw std::logic_error("FreeBodies::correct: an impact of body `" + body.name() +
-                                   "`, coupled exactly, with contact.water_impulse other than `obstacle`");
+        // An exactly coupled body (body-fitted) at an impact: the rebound law sets its velocity; with `obstacle` the
+        // obstacle takes the water's share of the impulse, with `body` block and water share their momentum at once
+        // (below); body_moved() brings the water to the body's final velocity exactly.
         BodyLoads& out = loads_[f.index];
         const BodyLoads last_pass = out;
         out = BodyLoads{};
@@ -175,16 +172,35 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
             out.contact_impulse = contact - out.water_impulse;
             out.contact_angular_impulse = contact_angular - out.water_angular_impulse;
         } else if (f.impact && !ev.empty() && !ev.back().rests) {
-            // The water takes its momentum back from the body at the impact: m (V - V_law) = J_w(V), relaxed
-            // with the virtual mass (J_w of this pass is the water's answer to the last pass's V).
             out.contact_impulse = contact;
             out.contact_angular_impulse = contact_angular;
-            const double c = cv * f.fluid_mass, ci = cv * f.fluid_inertia;
-            Vec2 v = (f.inertia.mass * s.velocity + out.water_impulse + c * f.rebound_velocity) / (f.inertia.mass + c);
-            const double w = turns ? (f.inertia.inertia * s.angular_velocity + out.water_angular_impulse +
-                                      ci * f.rebound_angular_velocity) /
-                                         (f.inertia.inertia + ci)
-                                   : s.angular_velocity;
+            Vec2 v;
+            double w = s.angular_velocity;
+            if (exact) {
+                // Coupled exactly: the law reverses the block alone, then block and water share their momentum at
+                // once, (m + M) V = m V_law + M v_free (M the added mass, v_free the velocity the water moved with:
+                // the block's without the impact), on the free translations; the water's impulse is m (V - V_law).
+                Eigen::Matrix2d A = f.inertia.mass * Eigen::Matrix2d::Identity() + *exact;
+                Vec2 b = f.inertia.mass * s.velocity + *exact * free_flight.velocity;
+                for (int k = 0; k < 2; ++k)
+                    if (free_translation[k] == 0.0) {
+                        A.row(k).setZero();
+                        A(k, k) = 1.0;
+                        b[k] = 0.0;
+                    }
+                v = A.partialPivLu().solve(b);
+                out.water_impulse = f.inertia.mass * (v - s.velocity);
+                change = 0.0;  // exact: the next pass finds the same V
+            } else {
+                // The water takes its momentum back from the body at the impact: m (V - V_law) = J_w(V), relaxed
+                // with the virtual mass (J_w of this pass is the water's answer to the last pass's V).
+                const double c = cv * f.fluid_mass, ci = cv * f.fluid_inertia;
+                v = (f.inertia.mass * s.velocity + out.water_impulse + c * f.rebound_velocity) / (f.inertia.mass + c);
+                if (turns)
+                    w = (f.inertia.inertia * s.angular_velocity + out.water_angular_impulse +
+                         ci * f.rebound_angular_velocity) /
+                        (f.inertia.inertia + ci);
+            }
             const double scale = std::max(out.water_impulse.norm() / f.inertia.mass, f.weight_acceleration * dt);
             change = std::max(
                 change, ((v - f.rebound_velocity).norm() + std::abs(w - f.rebound_angular_velocity) * reach) / scale);

@@ -11,8 +11,7 @@ BodyFittedSettings body_fitted_settings(const CaseConfig& c) {
             c.viscosity,
             c.depth,
             {c.boundary[0].type, c.boundary[1].type, c.boundary[2].type, c.boundary[3].type},
-            c.contact.distance,
-            c.contact.water_impulse == WaterImpulse::body};
+            c.contact.distance};
 }
 
 FreeBodySettings free_body_settings(const CaseConfig& c) {
