@@ -43,9 +43,11 @@ std::vector<CaseKey> contact_keys() {
          .min = at_least(0.0),
          .units = "m",
          .meaning = "Gap at which an impact happens. 0: at the surface. In water a flat face that meets a wall "
-                    "squarely is stopped by the fluid it squeezes out; below about one cell the squeeze film is "
-                    "unresolved (docs/validation.md), so a contact distance of one or two cells stands for the "
-                    "unresolved approach. Turmel & Locat's body-fitted mesh needed about 0.1 m."},
+                    "squarely is slowed by the fluid it squeezes out (docs/validation.md, The contact gap): a "
+                    "body_fitted body with layers resolves that cushion (its gap is the cell that stretches; "
+                    "converged at 5 mm), the immersed boundary not below about one cell, where a contact distance "
+                    "of one or two cells stands for the unresolved approach. Turmel & Locat's body-fitted mesh "
+                    "needed about 0.1 m, which leaves the cushion out."},
         {.path = "contact.duration",
          .type = K::number,
          .default_value = "0.002",
@@ -64,7 +66,8 @@ std::vector<CaseKey> contact_keys() {
                     "a contact resolved over many steps (`soft`) gives. `body` (Turmel & Locat 2008's CFD): "
                     "the law sets the body's velocity, then that water takes its momentum back from the body at "
                     "once, so the body leaves far slower. Either way the water's impulse is solved within the "
-                    "impact step (numerics.coupling) and recorded in N s; contacts.csv gives the rebound with it "
+                    "impact step (numerics.coupling; a body_fitted body is coupled exactly, (m + M) V = m V_law + "
+                    "M v_free with `body`) and recorded in N s; contacts.csv gives the rebound with it "
                     "(docs/validation.md, Impacts in water)."},
         {.path = "contact.friction",
          .type = K::number,
