@@ -54,6 +54,18 @@ double FreeBodies::max_dt(double cfl) const {
 
 namespace {
 double contraction(double change, double previous) { return std::min(change / previous, 0.99); }
+
+// (m + M) x = b on the free translations of an exactly coupled body (M its added mass); a locked one stays 0.
+Vec2 solve_with_added_mass(double mass, const Eigen::Matrix2d& added, Vec2 b, const Vec2& free_translation) {
+    Eigen::Matrix2d A = mass * Eigen::Matrix2d::Identity() + added;
+    for (int k = 0; k < 2; ++k)
+        if (free_translation[k] == 0.0) {
+            A.row(k).setZero();
+            A(k, k) = 1.0;
+            b[k] = 0.0;
+        }
+    return A.partialPivLu().solve(b);
+}
 }  // namespace
 
 double remaining_change(double change, double previous) {
@@ -134,15 +146,7 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
             // F(a) = F(a*) - M (a - a*) exactly, so m a = F(a) + W is (m + M) a = F(a*) + W + M a*, solved on the
             // free translations (a locked one stays 0); the carrier then brings the flow to it (body_moved).
             const Vec2 rhs = hydrodynamic.force + out.gravity + out.buoyancy + *exact * f.held_acceleration;
-            Eigen::Matrix2d A = f.inertia.mass * Eigen::Matrix2d::Identity() + *exact;
-            Vec2 b = rhs;
-            for (int k = 0; k < 2; ++k)
-                if (free_translation[k] == 0.0) {
-                    A.row(k).setZero();
-                    A(k, k) = 1.0;
-                    b[k] = 0.0;
-                }
-            s.acceleration = A.partialPivLu().solve(b);
+            s.acceleration = solve_with_added_mass(f.inertia.mass, *exact, rhs, free_translation);
             s.angular_acceleration = 0.0;  // the carrier takes bodies with their rotation locked only
             f.acceleration = s.acceleration;
             f.angular_acceleration = 0.0;
@@ -180,15 +184,9 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
                 // Coupled exactly: the law reverses the block alone, then block and water share their momentum at
                 // once, (m + M) V = m V_law + M v_free (M the added mass, v_free the velocity the water moved with:
                 // the block's without the impact), on the free translations; the water's impulse is m (V - V_law).
-                Eigen::Matrix2d A = f.inertia.mass * Eigen::Matrix2d::Identity() + *exact;
-                Vec2 b = f.inertia.mass * s.velocity + *exact * free_flight.velocity;
-                for (int k = 0; k < 2; ++k)
-                    if (free_translation[k] == 0.0) {
-                        A.row(k).setZero();
-                        A(k, k) = 1.0;
-                        b[k] = 0.0;
-                    }
-                v = A.partialPivLu().solve(b);
+                v = solve_with_added_mass(f.inertia.mass, *exact,
+                                          f.inertia.mass * s.velocity + *exact * free_flight.velocity,
+                                          free_translation);
                 out.water_impulse = f.inertia.mass * (v - s.velocity);
                 change = 0.0;  // exact: the next pass finds the same V
             } else {

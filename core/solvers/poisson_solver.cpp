@@ -176,16 +176,21 @@ std::vector<double> PoissonSolver::matrix_values() const {
 }
 
 HYPRE_StructMatrix PoissonSolver::new_matrix() const {
-    std::vector<double> values = matrix_values();
     HYPRE_StructMatrix m = nullptr;
     HYPRE_StructMatrixCreate(grid_.comm(), hgrid_, stencil_, &m);
     HYPRE_StructMatrixSetSymmetric(m, 1);  // stores 3 of the 5 coefficients: less to read per iteration
     HYPRE_StructMatrixInitialize(m);
+    set_values(m);
+    return m;
+}
+
+// This rank's coefficients (matrix_values) into `m`, assembled.
+void PoissonSolver::set_values(HYPRE_StructMatrix m) const {
+    std::vector<double> values = matrix_values();
     int entries[5] = {0, 1, 2, 3, 4};
     std::array<int, 2> lower = lower_, upper = upper_;  // hypre takes them non-const
     HYPRE_StructMatrixSetBoxValues(m, lower.data(), upper.data(), 5, entries, values.data());
     HYPRE_StructMatrixAssemble(m);
-    return m;
 }
 
 // PCG solves with the new matrix; the multigrid cycle stays the one set up on the matrix of the last
@@ -198,11 +203,7 @@ void PoissonSolver::update_coefficients() {
     if (ns.hierarchy_matrix) {
         // PCG's own matrix already: the same grid and stencil, new values in place (PCG's setup, its vectors and the
         // matrix-vector product's communication, stays valid).
-        std::vector<double> values = matrix_values();
-        int entries[5] = {0, 1, 2, 3, 4};
-        std::array<int, 2> lower = lower_, upper = upper_;
-        HYPRE_StructMatrixSetBoxValues(matrix_, lower.data(), upper.data(), 5, entries, values.data());
-        HYPRE_StructMatrixAssemble(matrix_);
+        set_values(matrix_);
         return;
     }
     ns.hierarchy_matrix = matrix_;

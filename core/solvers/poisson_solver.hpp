@@ -53,6 +53,7 @@ private:
     void destroy_solver();
     std::vector<double> matrix_values() const;
     HYPRE_StructMatrix new_matrix() const;
+    void set_values(HYPRE_StructMatrix m) const;
 
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;
