@@ -1,5 +1,6 @@
 // The flow's section of the case-file schema (flow_config.hpp) and its reading: the keys as data, checked and
 // typed by the generic reader (io/case_reader.hpp); then the checks that involve several of them.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,11 +14,27 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
 
-void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
+// domain.refinement f scales an axis as a grid-convergence study does: f times the cells, each f times narrower,
+// the growth ratio r^(1/f) so that f cells grow as much as one did (the stretching keeps its shape).
+void refine_axis(const CaseReader& r, const std::string& p, double f, AxisConfig& a) {
+    if (f == 1.0) return;
+    if (a.spacing == "lines")
+        r.fail("domain.refinement",
+               "cannot refine " + p + ", whose lines are listed one by one (spacing: lines); got " + exact_text(f));
+    const auto refined = [&](int n) { return std::max(2, static_cast<int>(std::lround(n * f))); };
+    a.cells = refined(a.cells);
+    a.core_cells = refined(a.core_cells);
+    a.ratio = std::pow(a.ratio, 1.0 / f);
+    a.first /= f;
+    a.max_width /= f;
+}
+
+void read_axis(const CaseReader& r, const std::string& p, double refinement, AxisConfig& a) {
     a.spacing = r.choice(p + ".spacing");
     a.beta = r.number(p + ".beta");
     a.ratio = r.number(p + ".ratio");
     if (a.spacing == "lines") {
+        refine_axis(r, p, refinement, a);
         a.lines = r.number_list(p + ".lines");
         if (a.lines.size() < 3)
             r.fail(p + ".lines", "expected at least 3 lines (2 cells), got " + std::to_string(a.lines.size()));
@@ -50,6 +67,7 @@ void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
                        "clustered cells grow away from the window: ratio >= 1, got " + exact_text(a.ratio));
             a.first = r.present(p + ".first") ? r.number(p + ".first") : 0.0;
             a.max_width = r.present(p + ".max") ? r.number(p + ".max") : 0.0;
+            refine_axis(r, p, refinement, a);
             const double window = a.core[1] - a.core[0];
             if (a.first > 0.0 && !(a.core_cells * a.first < window))
                 r.fail(p + ".first",
@@ -75,6 +93,7 @@ void read_axis(const CaseReader& r, const std::string& p, AxisConfig& a) {
             a.cells = static_cast<int>(lines.size()) - 1;
         } else {
             a.cells = static_cast<int>(r.integer(p + ".cells"));
+            refine_axis(r, p, refinement, a);
         }
     }
 }
@@ -261,6 +280,14 @@ std::vector<CaseKey> flow_keys() {
          .units = "m",
          .meaning = "Every grid line, strictly increasing, at least 3; start, end and cells follow from "
                     "them and are not given."},
+        {.path = "domain.refinement",
+         .type = K::number,
+         .default_value = "1.0",
+         .min = above(0),
+         .max = at_most(16),
+         .meaning = "A grid-convergence factor on both axes: f times the cells (`cells`, `core_cells`), `first` and "
+                    "`max` divided by f and `ratio` taken to the power 1/f, so the grid keeps its shape (0.5: half "
+                    "the cells each way; 1.5: the study of a finer grid). Not for listed lines."},
         {.path = "domain.depth",
          .type = K::number,
          .default_value = "1.0",
@@ -461,8 +488,9 @@ std::vector<Placeholder> flow_placeholders() {
 
 FlowConfig read_flow(const CaseReader& r) {
     FlowConfig c;
-    read_axis(r, "domain.x", c.x);
-    read_axis(r, "domain.y", c.y);
+    const double refinement = r.number("domain.refinement");
+    read_axis(r, "domain.x", refinement, c.x);
+    read_axis(r, "domain.y", refinement, c.y);
     check_grid(r, c);
     c.depth = r.number("domain.depth");
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -388,6 +389,42 @@ TEST(CaseFile, GridBeyondTheCellLimitIsRejectedBeforeItIsMade) {
                    {"domain.x.max", "at least"});
     EXPECT_GT(parse_case_text(kMinimal, {clustered + "core_cells: 10, first: 0.005, ratio: 1.1, max: 0.05}"}).x.cells,
               10);
+}
+
+// domain.refinement scales a grid as a convergence study does: f times the cells each way, and a stretched axis keeps
+// its shape (ratio^(1/f): f refined cells grow as much as one did), so its lines are the coarse grid's lines with
+// cells between them.
+TEST(CaseFile, RefinementScalesTheGridAndKeepsItsShape) {
+    const std::string clustered = "domain.x={start: -3, end: 3, spacing: clustered, core: [-0.5, 0.5], "
+                                  "core_cells: 10, ratio: 1.21, max: 0.4}";
+    const FlowConfig coarse = parse_case_text(kMinimal, {clustered, "domain.y={start: 0, end: 1, cells: 8}"});
+    const FlowConfig fine =
+        parse_case_text(kMinimal, {clustered, "domain.y={start: 0, end: 1, cells: 8}", "domain.refinement=2"});
+    EXPECT_EQ(fine.y.cells, 16);
+    EXPECT_EQ(fine.x.core_cells, 20);
+    EXPECT_DOUBLE_EQ(fine.x.ratio, 1.1);
+    EXPECT_DOUBLE_EQ(fine.x.max_width, 0.2);
+    const std::vector<double> a = axis_lines(coarse.x), b = axis_lines(fine.x);
+    EXPECT_NEAR(static_cast<double>(fine.x.cells), 2.0 * coarse.x.cells, 2.0);
+    EXPECT_DOUBLE_EQ(b.front(), -3.0);
+    EXPECT_DOUBLE_EQ(b.back(), 3.0);
+    // The window's lines fall on every other fine line; outside, the fine cells are half as wide as the coarse
+    // ones at the same place (to a cell's growth, 10 %).
+    const auto window_start = [](const std::vector<double>& l) {
+        return static_cast<std::size_t>(std::lower_bound(l.begin(), l.end(), -0.5 - 1e-12) - l.begin());
+    };
+    for (std::size_t k = 0; k <= 10; ++k)
+        EXPECT_NEAR(b[window_start(b) + 2 * k], a[window_start(a) + k], 1e-12) << "window line " << k;
+    for (std::size_t k = 1; k + 1 < a.size(); ++k) {
+        const double x = 0.5 * (a[k - 1] + a[k]);
+        const auto j = static_cast<std::size_t>(std::upper_bound(b.begin(), b.end(), x) - b.begin());
+        EXPECT_NEAR(b[j] - b[j - 1], 0.5 * (a[k] - a[k - 1]), 0.1 * (a[k] - a[k - 1])) << "coarse cell " << k;
+    }
+    const FlowConfig half = parse_case_text(kMinimal, {"domain.x.cells=31", "domain.refinement=0.5"});
+    EXPECT_EQ(half.x.cells, 16);  // rounded
+    expect_message(error_of(kMinimal, {"domain.x={spacing: lines, lines: [0, 0.5, 1]}", "domain.refinement=2"}),
+                   {"domain.refinement", "domain.x", "listed one by one"});
+    expect_message(error_of(kMinimal, {"domain.refinement=0"}), {"domain.refinement"});
 }
 
 // Found by the case fuzz: lines that a strong stretching makes equal in double precision (tanh beta 1e300,
