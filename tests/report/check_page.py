@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Checks the study's report page as a person would see it: renders OUT/index.html in headless Chromium (Debian's
+chromium), lets the page's own script count the figures that loaded and the claim cells left empty, and checks
+that every figure of the study (Figs. 4 to 10) is there and loaded and that every claim row carries the study's
+number, Chute's number in the immersed mode and a verdict in both modes. Saves what Chromium drew as
+OUT/page.png.
+Usage: /usr/bin/python3 tests/report/check_page.py OUT"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
+
+# The study's figures and the file each has in the report (python/study/*.py).
+STUDY_FIGURES = ["fig4_free_fall.png", "fig4_density.png", "fig4_size.png", "fig5_current.png", "fig6_bed.png",
+                 "fig7_bed.png", "fig8_air_beranger.png", "fig9_slope_45.png", "fig10_slope_30.png"]
+VERDICTS = {"agrees", "disagrees", "n/a"}
+
+
+class ClaimRows(HTMLParser):
+    """The cells of every <tr class="claim"> and the src of every <img>."""
+
+    def __init__(self):
+        super().__init__()
+        self.rows, self.images, self.cell, self.row = [], [], None, None
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "tr" and a.get("class") == "claim":
+            self.row = []
+        elif tag == "td" and self.row is not None:
+            self.cell = ""
+        elif tag == "img":
+            self.images.append(a.get("src", ""))
+
+    def handle_endtag(self, tag):
+        if tag == "td" and self.cell is not None:
+            self.row.append(self.cell.strip())
+            self.cell = None
+        elif tag == "tr" and self.row is not None:
+            self.rows.append(self.row)
+            self.row = None
+
+    def handle_data(self, data):
+        if self.cell is not None:
+            self.cell += data
+
+
+def chromium():
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        if shutil.which(name):
+            return name
+    raise SystemExit("check_page: no chromium (Debian: apt-get install chromium)")
+
+
+def main(out):
+    page = os.path.abspath(os.path.join(out, "index.html"))
+    flags = [chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--allow-file-access-from-files",
+             "--virtual-time-budget=10000"]
+    dom = subprocess.run(flags + ["--dump-dom", "file://" + page], capture_output=True, text=True, timeout=120).stdout
+    subprocess.run(flags + ["--window-size=1200,6000", f"--screenshot={os.path.join(out, 'page.png')}",
+                            "file://" + page], capture_output=True, timeout=120)
+    body = re.search(r"<body([^>]*)>", dom)
+    failures = []
+    if not body:
+        raise SystemExit(f"check_page: Chromium rendered no page from {page}")
+    attrs = dict(re.findall(r'data-([a-z-]+)="([^"]*)"', body.group(1)))
+    loaded, total = (int(x) for x in attrs.get("figures", "0/0").split("/"))
+    if loaded != total or total == 0:
+        failures.append(f"{loaded} of {total} figures loaded")
+    if attrs.get("empty-cells") != "0":
+        failures.append(f"{attrs.get('empty-cells')} empty claim cells")
+    parsed = ClaimRows()
+    parsed.feed(dom)
+    for name in STUDY_FIGURES:
+        if not any(src.endswith("/" + name) for src in parsed.images):
+            failures.append(f"the study's figure {name} is not on the page")
+    if len(parsed.rows) < 10:
+        failures.append(f"only {len(parsed.rows)} claim rows")
+    for row in parsed.rows:
+        # [figure,] claim, study, band, immersed, verdict, body-fitted, verdict
+        verdicts, immersed = row[-3::2], row[-4]
+        if not set(verdicts) <= VERDICTS:
+            failures.append(f"a claim without a verdict: {row}")
+        if not re.match(r"-?[0-9]", immersed) and "study's treatment" not in row[-7]:
+            failures.append(f"a claim without Chute's immersed number: {row}")
+    print(f"check_page: {loaded}/{total} figures loaded, {len(parsed.rows)} claim rows, "
+          f"{attrs.get('empty-cells')} empty cells; {os.path.join(out, 'page.png')}")
+    if failures:
+        raise SystemExit("check_page: " + "; ".join(failures))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        raise SystemExit(__doc__)
+    main(sys.argv[1])
