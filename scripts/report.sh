@@ -11,8 +11,8 @@ cd "$(dirname "$0")/.."
 scenarios=(free_fall_block free_fall_density free_fall_size free_fall_current bounce_bed bounce_bed_1m
            bounce_bed_air_beranger bounce_slope)
 # Wall seconds of each scenario's runs on 2 cores (full, measured 2026-11-24), for the time-left estimate.
-declare -A expected=([free_fall_block]=270 [free_fall_density]=230 [free_fall_size]=80 [free_fall_current]=45
-                     [bounce_bed]=200 [bounce_bed_1m]=40 [bounce_bed_air_beranger]=40 [bounce_slope]=500)
+declare -A expected=([free_fall_block]=270 [free_fall_density]=230 [free_fall_size]=60 [free_fall_current]=40
+                     [bounce_bed]=145 [bounce_bed_1m]=35 [bounce_bed_air_beranger]=100 [bounce_slope]=700)
 quick=0
 out=""
 args=()

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from common import MODES, SPLIT_HEADER, STYLE, plt, split_row
+from common import MODES, SPLIT_HEADER, STYLE, finish_axes, plt, split_row
 from fall import mode_runs
 
 
@@ -77,7 +77,7 @@ def bed(runs, ref, result, figure_number, block):
     if rows:
         result.table(f"Grid convergence of the {block} block's rebound height on the bed (m)",
                      ["mode", "10 cells across", "20 (the study's grid)", "30"], rows, topic="grid convergence")
-    else:
+    elif result.data["quick"]:
         result.note("Grid convergence: not run with --quick.")
 
 
@@ -98,19 +98,41 @@ def air_beranger(runs, ref, result):
         ax.plot(air[mode].t, air[mode].height(), STYLE[mode], color="tab:red", label=f"air, Chute {mode}")
     t, h, _, _ = water["immersed"].lumped(1)
     ax.plot(t, h, ":", color="tab:green", label="water, Beranger et al. (1998)")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("displacement of the centre (m)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title("Fig. 8: the 0.3 m block's bed bounce: Chute in water and air, and the Beranger model", fontsize=10)
+    finish_axes(ax, "t (s)", "displacement of the centre (m)",
+                "Fig. 8: the 0.3 m block's bed bounce: Chute in water and air, and the Beranger model")
     result.figure(fig, "fig8_air_beranger.png", "Displacement against time: the CFD in water and in air (both modes) "
                   "and the Beranger lumped model in water (C_D 2, C_a 0.5, the same release and restitution).")
     beranger = beranger_rebound(water["immersed"])
     result.claim(ref["beranger_over_water"], {m: beranger / water[m].rebound_height() for m in MODES}, digits=3)
     result.claim(ref["air_over_water"], {m: air[m].rebound_height() / water[m].rebound_height() for m in MODES})
-    rows = [[m, f"{water[m].rebound_height():.4f}", f"{air[m].rebound_height():.4f}", f"{beranger:.4f}"]
-            for m in MODES]
-    result.table("Rebound heights (m)", ["mode", "water", "air", "Beranger (water)"], rows)
+    study = {m: runs.get(f"water_{m.replace('-', '_')}_study_impulse") for m in MODES}
+    study = {m: r for m, r in study.items() if r is not None}
+    for key in ("beranger_over_water", "air_over_water"):
+        row = dict(ref[key])
+        row["claim"] += " (with the study's treatment of the impact: contact.water_impulse body)"
+        top = {m: beranger if key == "beranger_over_water" else air[m].rebound_height() for m in study}
+        result.claim(row, {m: top[m] / max(r.rebound_height(), 1e-12) for m, r in study.items()})
+    rows = [[m, f"{water[m].rebound_height():.4f}",
+             f"{study[m].rebound_height():.4f}" if m in study else "n/a", f"{air[m].rebound_height():.4f}",
+             f"{beranger:.4f}"] for m in MODES]
+    result.table("Rebound heights (m)", ["mode", "water", "water, the study's impact treatment", "air",
+                                         "Beranger (water)"], rows)
+    if study:
+        fig, ax = plt.subplots(figsize=(7.5, 4.0))
+        for m, r in study.items():
+            ax.plot(r.t, r.height(), STYLE[m], color="tab:green", label=f"water, the study's impact treatment, {m}")
+            ax.plot(water[m].t, water[m].height(), STYLE[m], color="tab:blue", label=f"water, Chute's default, {m}")
+        t, h, _, _ = water["immersed"].lumped(1)
+        ax.plot(t, h, ":", color="k", label="Beranger et al. (1998)")
+        impact = water["immersed"].first_impact_time()
+        ax.set_xlim(impact - 0.3, water["immersed"].t[-1])
+        ground = water["immersed"].at(impact, water["immersed"].height())
+        ax.set_ylim(ground - 0.05, ground + 1.5 * max(beranger, water["immersed"].rebound_height()))
+        finish_axes(ax, "t (s)", "displacement of the centre (m)",
+                    "Fig. 8, close up: the rebound in water with either treatment of the impact", legend_size=7)
+        result.figure(fig, "fig8_treatments.png", "The rebound in water with Chute's default treatment of the impact "
+                      "(the bed stops the block and the water it carries together) and the study's (the law reverses "
+                      "the block alone; its water brakes it after), against the Beranger model.")
     result.table("Wet restitution of the first impact, water and air", RESTITUTION_HEADER,
                  restitution_rows({**{f"water_{m}": water[m] for m in MODES}, **{f"air_{m}": air[m] for m in MODES}}),
                  topic="wet restitution")

@@ -19,6 +19,16 @@ MODES = ("immersed", "body-fitted")
 STYLE = {"immersed": "-", "body-fitted": "--"}
 
 
+def finish_axes(ax, xlabel, ylabel, title=None, legend_size=8):
+    """Labels, grid and legend, the same on every figure of the report."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=legend_size)
+    if title:
+        ax.set_title(title, fontsize=10)
+
+
 def read_reference(folder):
     """reference.csv: id, claim, value, low, high, unit, source; the band [low, high] is what agrees (empty: open)."""
     with open(os.path.join(folder, "reference.csv")) as f:

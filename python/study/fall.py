@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from common import MODES, SPLIT_HEADER, STYLE, plt, split_row
+from common import MODES, SPLIT_HEADER, STYLE, finish_axes, plt, split_row
 
 
 def mode_runs(runs, suffix=""):
@@ -56,7 +56,7 @@ def free_fall(runs, ref, result):
     if rows:
         result.table("Grid convergence of the terminal speed (m/s, mean over t = 1.5-2.5 s; cells across the block)",
                      ["mode", "coarse", "study's grid", "fine", "last refinement"], rows, topic="grid convergence")
-    else:
+    elif result.data["quick"]:
         result.note("Grid convergence: not run with --quick.")
 
 
@@ -138,17 +138,11 @@ def current(runs, ref, result):
     a1.plot(t, m["u"][keep], ":", color="tab:blue", label="u, Beranger")
     a1.plot(t, v, ":", color="tab:orange", label="fall speed, Beranger")
     a1.axhline(1.0, color="k", lw=0.6)
-    a1.set_xlabel("t (s)")
-    a1.set_ylabel("m/s")
-    a1.legend(fontsize=8)
-    a1.grid(alpha=0.3)
+    finish_axes(a1, "t (s)", "m/s")
     a2.plot(r.series["x"], r.series["y"], label="Chute immersed")
     a2.plot(p[:, 0], p[:, 1], ":", label="Beranger")
     a2.set_aspect("equal")
-    a2.set_xlabel("x (m)")
-    a2.set_ylabel("y (m)")
-    a2.legend(fontsize=8)
-    a2.grid(alpha=0.3)
+    finish_axes(a2, "x (m)", "y (m)")
     fig.suptitle("Fig. 5: the 0.3 m block released in a 1 m/s current", fontsize=10)
     result.figure(fig, "fig5_current.png", "Speeds and path of the block in a 1 m/s current (immersed mode), with "
                   "the Beranger model of the same release.")

@@ -23,12 +23,30 @@ def read_csv(path):
     return {k: column(k) for k in rows[0]}
 
 
+def read_case(path):
+    """The case a run ran: its results folder's case.yaml with the command line's --set overrides applied (the
+    solver lists them as comments at the end: "#   key.path=value")."""
+    text = open(path).read()
+    case = yaml.safe_load(text)
+    marker = "# Overrides given on the command line"
+    if marker in text:
+        for line in text[text.index(marker):].splitlines()[1:]:
+            if not line.startswith("#   ") or "=" not in line:
+                continue
+            key, value = line[4:].split("=", 1)
+            node = case
+            *parents, last = key.strip().split(".")
+            for name in parents:
+                node = node.setdefault(name, {})
+            node[last] = yaml.safe_load(value)
+    return case
+
+
 class Run:
     def __init__(self, label, folder, body="block"):
         self.label, self.folder, self.body = label, folder, body
         self.series = read_csv(os.path.join(folder, f"body_{body}.csv"))
-        with open(os.path.join(folder, "case.yaml")) as f:
-            self.case = yaml.safe_load(f)
+        self.case = read_case(os.path.join(folder, "case.yaml"))
         self.gravity = np.array(self.case.get("gravity", [0.0, -9.81]), dtype=float)
         self.down = self.gravity / np.linalg.norm(self.gravity)
         self.across = np.array([-self.down[1], self.down[0]])  # horizontal in the real frame, towards +x at 0
