@@ -162,10 +162,18 @@ def main(out):
         tables = [t for d in results for t in d["tables"] if t.get("topic") == topic]
         page.append(f"<h3>{esc(heading)}</h3><p class='note'>{esc(intro)}</p>")
         page += [table_html(t) for t in tables] or ["<p class='note'>Not run (--quick).</p>"]
-    if timing:
-        page.append("<h2>Time taken</h2><table><tr><th>scenario</th><th>wall time (s)</th></tr>" +
-                    "".join(f"<tr><td>{esc(k)}</td><td>{v}</td></tr>" for k, v in timing.items()) +
-                    f"<tr><td><b>all</b></td><td><b>{sum(timing.values())}</b></td></tr></table>")
+    page.append("<h2>Time taken</h2><p class='note'>The runs' own wall times (what each scenario costs from "
+                "scratch; a run shared by two scenarios is counted in each) and the time this call of "
+                "scripts/report.sh spent (finished runs are reused).</p><table><tr><th>scenario</th>"
+                "<th>its runs (s)</th><th>this call (s)</th></tr>")
+    total = 0.0
+    for d in results:
+        runs = sum(r["wall"] for r in d["runs"] if r["wall"] == r["wall"])
+        total += runs
+        page.append(f"<tr><td>{esc(d['scenario'])}</td><td>{runs:.0f}</td>"
+                    f"<td>{timing.get(d['scenario'], 'n/a')}</td></tr>")
+    page.append(f"<tr><td><b>all</b></td><td><b>{total:.0f}</b></td><td><b>{sum(timing.values())}</b></td></tr>"
+                "</table>")
     page.append("</body></html>")
     write_atomically(os.path.join(out, "index.html"), "\n".join(page))
 

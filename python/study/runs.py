@@ -163,13 +163,16 @@ class Run:
     def wet_restitution(self):
         """(normal, tangential) restitution of the first impact with the water's share included: the speed with
         which the block leaves the surface over the speed it arrived with (contacts.csv's wet columns), and the
-        normal one a dry model would need for the same rebound height (sqrt(2 g h) over the impact's normal speed)."""
+        normal one a dry model would need to rise as far from the surface (sqrt(2 g_n h_n) over the impact's normal
+        speed, h_n the rise normal to the surface and g_n gravity's component along it)."""
         if self.impacts is None:
             return math.nan, math.nan, math.nan
         normal_in = abs(self.impacts["v_before"][0])  # the contact planes of the study's scenarios face +y
-        height = self.rebound_height()
-        g_normal = abs(self.gravity[1])
-        by_height = math.sqrt(2 * g_normal * max(height * abs(self.down[1]), 0.0)) / normal_in
+        t0 = self.first_impact_time()
+        t1 = float(self.impacts["t"][1]) if len(self.impacts["t"]) > 1 else self.t[-1]
+        flight = (self.t >= t0) & (self.t <= t1)
+        rise = float(self.series["y"][flight].max() - self.at(t0, self.series["y"])) if flight.any() else 0.0
+        by_height = math.sqrt(2 * abs(self.gravity[1]) * max(rise, 0.0)) / normal_in
         return (float(self.impacts["wet_normal_restitution"][0]),
                 float(self.impacts["wet_tangential_restitution"][0]), by_height)
 
