@@ -395,8 +395,9 @@ TEST(CaseFile, GridBeyondTheCellLimitIsRejectedBeforeItIsMade) {
 // its shape (ratio^(1/f): f refined cells grow as much as one did), so its lines are the coarse grid's lines with
 // cells between them.
 TEST(CaseFile, RefinementScalesTheGridAndKeepsItsShape) {
-    const std::string clustered = "domain.x={start: -3, end: 3, spacing: clustered, core: [-0.5, 0.5], "
-                                  "core_cells: 10, ratio: 1.21, max: 0.4}";
+    const std::string clustered =
+        "domain.x={start: -3, end: 3, spacing: clustered, core: [-0.5, 0.5], "
+        "core_cells: 10, ratio: 1.21, max: 0.4}";
     const FlowConfig coarse = parse_case_text(kMinimal, {clustered, "domain.y={start: 0, end: 1, cells: 8}"});
     const FlowConfig fine =
         parse_case_text(kMinimal, {clustered, "domain.y={start: 0, end: 1, cells: 8}", "domain.refinement=2"});
