@@ -3,7 +3,9 @@
 # script (reusing finished runs; --redo runs them again) and writes OUT/index.html with the figures of the study's
 # Figs. 4 to 10, each claim of the study with Chute's numbers in both modes and a verdict, and what the study could
 # not do (python/study/report.py); and the same as OUT/report.pdf when Chromium is installed.
-#   scripts/report.sh [--quick] [--redo] [--out DIR]       (after scripts/build.sh)
+#   scripts/report.sh [--quick] [--redo] [--out DIR] [--no-build]
+# It installs what is missing and builds first (scripts/install-deps.sh, scripts/build.sh), so that it works from a
+# fresh clone; --no-build skips that (the test that runs it, inside a build).
 # Full: about 25 min on 2 cores, into results/study/index.html; --quick (half the cells each way): under 5 min,
 # into results/study-quick/index.html (the numbers then check the chain, not the study).
 set -euo pipefail
@@ -15,16 +17,22 @@ declare -A expected=([free_fall_block]=270 [free_fall_density]=230 [free_fall_si
                      [bounce_bed]=145 [bounce_bed_1m]=35 [bounce_bed_air_beranger]=100 [bounce_slope]=700)
 quick=0
 out=""
+build=1
 args=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1; args+=("$1") ;;
     --redo) args+=("$1") ;;
     --out) out=$2; shift ;;
-    *) sed -n '2,8p' "$0"; exit 2 ;;
+    --no-build) build=0 ;;
+    *) sed -n '2,10p' "$0"; exit 2 ;;
   esac
   shift
 done
+if [ $build -eq 1 ]; then
+  scripts/install-deps.sh
+  scripts/build.sh
+fi
 [ -n "$out" ] || out=results/$([ $quick -eq 1 ] && echo study-quick || echo study)
 mkdir -p "$out"
 total=0
