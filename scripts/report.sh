@@ -42,7 +42,7 @@ start=$SECONDS
 left=$total
 timing=""
 for s in "${scenarios[@]}"; do
-  printf 'report: %-24s (%d s so far, about %d s left)\n' "$s" "$(( SECONDS - start ))" "$left"
+  printf 'report: %-24s (%d s so far, at most about %d s left: less where runs are reused)\n' "$s" "$(( SECONDS - start ))" "$left"
   t0=$SECONDS
   examples/$s/run "${args[@]}" --out "$out" > "$out/$s.log" 2>&1 || {
     echo "report: $s failed; its log: $out/$s.log" >&2
