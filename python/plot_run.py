@@ -8,7 +8,9 @@ its trajectory, velocity and forces against the dry and Beranger lumped models o
 Usage: /usr/bin/python3 python/plot_run.py RESULTS_DIR
 Uses Debian's numpy, h5py and matplotlib (call /usr/bin/python3: a pyenv python does not see them).
 """
+import csv
 import glob
+import math
 import os
 import sys
 
@@ -18,6 +20,23 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    """A CSV with a header as columns by name: numbers as float arrays (empty and "nan" as NaN), a column that is not
+    all numbers (contacts.csv's body and obstacle) as strings."""
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return {}
+
+    def column(k):
+        try:
+            return np.array([float(r[k]) if r[k] not in ("", "nan") else math.nan for r in rows])
+        except ValueError:
+            return np.array([r[k] for r in rows])
+
+    return {k: column(k) for k in rows[0]}
 
 
 def save(fig, path):

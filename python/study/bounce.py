@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from common import MODES, SPLIT_HEADER, STYLE, finish_axes, plt, split_row
-from fall import mode_runs
+from fall import convergence_levels, mode_runs
 
 
 def restitution_rows(runs):
@@ -70,8 +70,7 @@ def bed(runs, ref, result, figure_number, block):
                      topic="contact at the bed")
     rows = []
     for mode in MODES:
-        levels = [(f, mode_runs(runs, s).get(mode)) for f, s in ((0.5, "_x0.5"), (1.0, ""), (1.5, "_x1.5"))]
-        levels = [(f, r) for f, r in levels if r is not None]
+        levels = convergence_levels(runs, mode)
         if len(levels) == 3:
             rows.append([mode] + [f"{r.rebound_height():.4f}" for _, r in levels])
     if rows:

@@ -13,6 +13,13 @@ def mode_runs(runs, suffix=""):
     return {m: r for m, r in found.items() if r is not None}
 
 
+def convergence_levels(runs, mode):
+    """(refinement, run) of a mode at half, the study's and 1.5 times the cells each way (the run scripts' labels
+    <mode>_x0.5, <mode>, <mode>_x1.5), those that were run."""
+    levels = [(f, mode_runs(runs, suffix).get(mode)) for f, suffix in ((0.5, "_x0.5"), (1.0, ""), (1.5, "_x1.5"))]
+    return [(f, r) for f, r in levels if r is not None]
+
+
 def speed_axes(title):
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
     ax.set_xlabel("t (s)")
@@ -46,8 +53,7 @@ def free_fall(runs, ref, result):
     # Grid convergence of the terminal speed (mean over t = 1.5-2.5 s, the convergence runs' window).
     rows = []
     for mode in MODES:
-        levels = [(f, mode_runs(runs, s).get(mode)) for f, s in ((0.5, "_x0.5"), (1.0, ""), (1.5, "_x1.5"))]
-        levels = [(f, r) for f, r in levels if r is not None]
+        levels = convergence_levels(runs, mode)
         if len(levels) < 2:
             continue
         speeds = [r.terminal_speed(1.5, 2.5) for _, r in levels]

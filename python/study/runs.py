@@ -1,26 +1,15 @@
 """A finished Chute run of the study and what the study's figures read from it: speeds, the first impact, the
 rebound, the runout, the decelerations after contact, the force split and the wet restitution. Every number comes
 from the run's own files (body_<body>.csv, contacts.csv, lumped_<body>.csv, case.yaml, wall_seconds.txt)."""
-import csv
 import math
 import os
+import sys
 
 import numpy as np
 import yaml
 
-
-def read_csv(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return {}
-    def column(k):
-        try:
-            return np.array([float(r[k]) if r[k] not in ("", "nan") else math.nan for r in rows])
-        except ValueError:  # a text column (contacts.csv's body and obstacle)
-            return np.array([r[k] for r in rows])
-
-    return {k: column(k) for k in rows[0]}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from plot_run import read_csv  # noqa: E402
 
 
 def read_case(path):
@@ -59,11 +48,8 @@ class Run:
         self.lumped_table = read_csv(os.path.join(folder, f"lumped_{body}.csv"))
         wall = os.path.join(folder, "wall_seconds.txt")
         self.wall = float(open(wall).read()) if os.path.exists(wall) else math.nan
-        block = self.case["bodies"][body]
-        self.size = float(block["size"][0])
-        self.density = float(block["density"])
-        self.fluid_density = float(self.case["fluid"]["density"])
-        self.mode = "body-fitted" if block.get("carrier") == "body_fitted" else "immersed"
+        carrier = self.case["bodies"][body].get("carrier")
+        self.mode = "body-fitted" if carrier == "body_fitted" else "immersed"
 
     # --- series ---------------------------------------------------------------------------------------------------
     @property
@@ -115,15 +101,20 @@ class Run:
             return math.nan
         return float(np.array([self.impacts["u_before"][k], self.impacts["v_before"][k]]) @ self.down)
 
+    def first_flight(self):
+        """The samples from the first impact to the next contact (or the run's end); None without an impact."""
+        if self.impacts is None:
+            return None
+        t1 = float(self.impacts["t"][1]) if len(self.impacts["t"]) > 1 else self.t[-1]
+        return (self.t >= self.first_impact_time()) & (self.t <= t1)
+
     def rebound_height(self):
         """Rise of the centre against gravity between the first impact and the top of the flight that follows."""
-        if self.impacts is None:
+        flight = self.first_flight()
+        if flight is None or not flight.any():
             return math.nan
-        t0 = self.first_impact_time()
-        t1 = float(self.impacts["t"][1]) if len(self.impacts["t"]) > 1 else self.t[-1]
-        flight = (self.t >= t0) & (self.t <= t1)
         h = self.height()
-        return float(h[flight].max() - self.at(t0, h)) if flight.any() else math.nan
+        return float(h[flight].max() - self.at(self.first_impact_time(), h))
 
     def deceleration_after_impact(self, span=0.01):
         """Mean deceleration over the first `span` seconds after the first impact: the drop of the rising speed
@@ -168,10 +159,9 @@ class Run:
         if self.impacts is None:
             return math.nan, math.nan, math.nan
         normal_in = abs(self.impacts["v_before"][0])  # the contact planes of the study's scenarios face +y
-        t0 = self.first_impact_time()
-        t1 = float(self.impacts["t"][1]) if len(self.impacts["t"]) > 1 else self.t[-1]
-        flight = (self.t >= t0) & (self.t <= t1)
-        rise = float(self.series["y"][flight].max() - self.at(t0, self.series["y"])) if flight.any() else 0.0
+        flight = self.first_flight()
+        y = self.series["y"]
+        rise = float(y[flight].max() - self.at(self.first_impact_time(), y)) if flight.any() else 0.0
         by_height = math.sqrt(2 * abs(self.gravity[1]) * max(rise, 0.0)) / normal_in
         return (float(self.impacts["wet_normal_restitution"][0]),
                 float(self.impacts["wet_tangential_restitution"][0]), by_height)
