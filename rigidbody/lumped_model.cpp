@@ -1,5 +1,7 @@
 #include "lumped_model.hpp"
 
+#include "cvode_errors.hpp"
+
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -21,17 +23,11 @@ struct Problem {
 
 // y = (x, y, u, v).
 int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
-    const auto& m = static_cast<Problem*>(data)->model;
     const sunrealtype* Y = N_VGetArrayPointer(y);
     sunrealtype* D = N_VGetArrayPointer(dy);
-    const Vec2 v(Y[2], Y[3]);
-    const double fluid_mass = m.fluid_density * m.volume;
-    const Vec2 w = v - m.current;
-    const Vec2 force =
-        (m.mass - fluid_mass) * m.gravity - 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area * w.norm() * w;
-    const Vec2 a = force / (m.mass + m.added_mass_coefficient * fluid_mass);
-    D[0] = v.x();
-    D[1] = v.y();
+    const Vec2 a = lumped_acceleration(static_cast<Problem*>(data)->model, Vec2(Y[2], Y[3]));
+    D[0] = Y[2];
+    D[1] = Y[3];
     D[2] = a.x();
     D[3] = a.y();
     return 0;
@@ -52,23 +48,17 @@ int gaps(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
     return 0;
 }
 
-// CVODE's messages: an error is kept for the exception check() throws; warnings are dropped. The one met in
-// practice, "root functions identically 0" at the start of a step, comes from a block resting on or
-// grazing an obstacle, which the impact count below settles; CVodeReInit re-arms it after every impact, so
-// printed it floods the terminal (thousands of lines for a block started inside the bed's reach).
-extern "C" void keep_cvode_error(int code, const char*, const char* function, char* message, void* last_error) {
-    if (code < 0) *static_cast<std::string*>(last_error) = std::string(function) + ": " + message;
-}
-
-std::string cvode_error;  // the last error CVODE reported (run_lumped_model is not re-entrant)
-
-void check(int flag, const char* what) {
-    if (flag < 0)
-        throw std::runtime_error(std::string("lumped model: CVODE ") + what + " failed (flag " + std::to_string(flag) +
-                                 (cvode_error.empty() ? "" : ", " + cvode_error) + ")");
-}
+void check(int flag, const char* what) { cvode_check(flag, what, "lumped model"); }
 
 }  // namespace
+
+Vec2 lumped_acceleration(const LumpedModelConfig& m, const Vec2& v) {
+    const double fluid_mass = m.fluid_density * m.volume;
+    const Vec2 w = v - m.current;
+    const Vec2 force =
+        (m.mass - fluid_mass) * m.gravity - 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area * w.norm() * w;
+    return force / (m.mass + m.added_mass_coefficient * fluid_mass);
+}
 
 LumpedTrajectory run_lumped_model(const LumpedModelConfig& model, const Outline& outline, const BodyState& start,
                                   const std::vector<Obstacle>& obstacles, const ContactConfig& contact, double t_end,
@@ -89,8 +79,7 @@ LumpedTrajectory run_lumped_model(const LumpedModelConfig& model, const Outline&
     SUNNonlinearSolver nls = SUNNonlinSol_FixedPoint(y, 0, ctx);
     double t = 0.0;
     try {
-        cvode_error.clear();
-        check(CVodeSetErrHandlerFn(mem, keep_cvode_error, &cvode_error), "CVodeSetErrHandlerFn");
+        keep_cvode_errors(mem);
         check(CVodeInit(mem, rhs, t, y), "CVodeInit");
         check(CVodeSStolerances(mem, model.relative_tolerance, model.absolute_tolerance), "CVodeSStolerances");
         check(CVodeSetNonlinearSolver(mem, nls), "CVodeSetNonlinearSolver");

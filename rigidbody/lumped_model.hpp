@@ -27,6 +27,10 @@ struct LumpedModelConfig {
     double relative_tolerance = 1e-11, absolute_tolerance = 1e-13;
 };
 
+// The model's acceleration at velocity v (the equation above; dry: g). The hazard analysis (hazard/) flies its
+// blocks with it too, so that its dry limit is this model's.
+Vec2 lumped_acceleration(const LumpedModelConfig& model, const Vec2& v);
+
 struct LumpedSample {
     double t = 0.0;
     Vec2 position = Vec2::Zero(), velocity = Vec2::Zero();
