@@ -1,7 +1,9 @@
 // chute: the command-line tool.
 //   chute run CASE.yaml [--out DIR] [--set key.path=value ...] [--restart CHECKPOINT|DIR] [--no-plots]
 //             [--sweep key.path=v1,v2,... ...]   one run per combination, in DIR/<key>=<value>,...
-//   chute keys            prints every case-file key (the table of docs/case-file.md)
+//   chute hazard CASE.yaml [--out DIR] [--set key.path=value ...] [--no-plots]
+//             a rockfall hazard analysis over a slope profile (hazard/; keys: docs/hazard-case-file.md)
+//   chute keys [--hazard] prints every case-file key (the table of docs/case-file.md, or of the hazard case)
 #include <HYPRE_utilities.h>
 #include <mpi.h>
 #include <CLI/CLI.hpp>
@@ -17,6 +19,8 @@
 #include <thread>
 
 #include "case_file.hpp"
+#include "hazard_case.hpp"
+#include "hazard_command.hpp"
 #include "hdf5_file.hpp"
 #include "leak_check.hpp"
 #include "output_error.hpp"
@@ -185,13 +189,25 @@ int main(int argc, char** argv) {
     std::vector<std::string> sweeps;
     run->add_option("--sweep", sweeps,
                     "run once per value: --sweep bodies.block.density=2400,2500,2600 (repeatable: every combination)");
+    auto* hazard = app.add_subcommand("hazard", "run a rockfall hazard analysis (Monte Carlo lumped trajectories)");
+    std::filesystem::path hazard_case, hazard_out;
+    std::vector<std::string> hazard_overrides;
+    bool hazard_no_plots = false;
+    hazard->add_option("case", hazard_case, "hazard case file (YAML)")->required();
+    hazard->add_option("--out", hazard_out, "results folder (default results/<case name>)");
+    hazard->add_option("--set", hazard_overrides, "override a key: --set trajectories=10000 (repeatable)");
+    hazard->add_flag("--no-plots", hazard_no_plots, "do not make the PNG plots");
     auto* keys = app.add_subcommand("keys", "print every case-file key with its type, default and range");
+    bool hazard_keys = false;
+    keys->add_flag("--hazard", hazard_keys, "the keys of a hazard case");
 
     int code = 0;
     try {
         app.parse(argc, argv);
         if (*keys) {
-            if (rank == 0) std::cout << chute::schema_markdown();
+            if (rank == 0) std::cout << (hazard_keys ? chute::hazard_keys_markdown() : chute::schema_markdown());
+        } else if (*hazard) {
+            code = hazard_command(hazard_case, hazard_out, hazard_overrides, hazard_no_plots);
         } else {
             if (!sweeps.empty() && !restart.empty()) throw chute::CaseError("--sweep and --restart do not go together");
             code = sweeps.empty() ? run_command(case_file, out_dir, overrides, restart, no_plots)

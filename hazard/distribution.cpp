@@ -171,7 +171,8 @@ Distribution read_distribution(const CaseReader& r, const std::string& path, con
         const double mean = r.number(path + ".mean"), sd = r.number(path + ".sd");
         const std::optional<double> lo = optional(path + ".min"), hi = optional(path + ".max");
         if (lo && hi && !(*lo < *hi)) r.fail(path + ".max", "must be above " + path + ".min (" + exact_text(*lo) + ")");
-        if (kind == "lognormal" && !(mean > 0.0)) r.fail(path + ".mean", "a lognormal distribution's mean must be positive");
+        if (kind == "lognormal" && !(mean > 0.0))
+            r.fail(path + ".mean", "a lognormal distribution's mean must be positive");
         // The window must hold a fair share of the distribution (rejection sampling), and the mean must lie
         // within a few standard deviations of it.
         if ((lo && *lo > mean + 4.0 * sd) || (hi && *hi < mean - 4.0 * sd))
@@ -184,8 +185,9 @@ Distribution read_distribution(const CaseReader& r, const std::string& path, con
     const bool shaped = kind == "normal" || kind == "lognormal";
     const auto key_for = [&](const char* bound) { return path + (kind == "fixed" ? ".value" : bound); };
     const auto hint = [&](const char* bound) {
-        return shaped ? std::string(" (a ") + kind + " distribution reaches there: truncate it with " + path + bound + ")"
-                      : std::string();
+        return shaped
+                   ? std::string(" (a ") + kind + " distribution reaches there: truncate it with " + path + bound + ")"
+                   : std::string();
     };
     if (limits.above && !(lo > *limits.above))
         r.fail(key_for(".min"), "must be above " + exact_text(*limits.above) + hint(".min"));

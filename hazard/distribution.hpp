@@ -24,8 +24,7 @@ class Distribution {
 public:
     static Distribution fixed(double value);
     static Distribution uniform(double min, double max);
-    static Distribution normal(double mean, double sd, std::optional<double> min = {},
-                               std::optional<double> max = {});
+    static Distribution normal(double mean, double sd, std::optional<double> min = {}, std::optional<double> max = {});
     static Distribution lognormal(double mean, double sd, std::optional<double> min = {},
                                   std::optional<double> max = {});
 
@@ -45,7 +44,7 @@ private:
 // The limits a quantity must keep (a size above 0, a restitution within [0, 1]); the reading checks that no
 // draw can leave them, and names the key to add (a truncation) when one could.
 struct QuantityLimits {
-    std::optional<double> above, at_least, at_most;
+    std::optional<double> above = {}, at_least = {}, at_most = {};
 };
 
 // The schema's keys of a distributed quantity at `path` (a section with distribution, value, min, max, mean,

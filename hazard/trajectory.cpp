@@ -1,7 +1,5 @@
 #include "trajectory.hpp"
 
-#include "cvode_errors.hpp"
-
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -13,48 +11,27 @@
 #include <stdexcept>
 #include <string>
 
+#include "cvode_errors.hpp"
+#include "slide_motion.hpp"
+
 namespace chute {
 
-// Flight: y = (x, z, u, w). Slide on `segment`: y = (s, v, 0, 0), s along the segment from its start, v the
-// velocity along its tangent, `direction` the sign of v (the friction's is its opposite).
-struct TrajectoryIntegrator::Phase {
+// A flight: y = (x, z, u, w) under `model` (the medium the block is in), spinning at `spin` since its last impact.
+struct TrajectoryIntegrator::Flight {
     const TrajectoryIntegrator* self = nullptr;
-    LumpedModelConfig model;  // the flight model in the medium the block is in
-    bool sliding = false;
-    int segment = 0;
-    double direction = 1.0;
-    double friction = 0.0;  // tan(friction angle)
-    double spin = 0.0;      // rad/s (flight: since the last impact)
+    LumpedModelConfig model;
+    double spin = 0.0;
 };
 
 namespace {
 
-constexpr double in_air = std::numeric_limits<double>::infinity();
-
-// Along the segment: gravity and buoyancy, Coulomb friction on the buoyant weight pressing on it, drag, and the
-// added mass.
-double slide_acceleration(const LumpedModelConfig& m, const SlopeSegment& s, double v, double direction,
-                          double friction) {
-    const double buoyant = m.mass - m.fluid_density * m.volume;
-    const double along = buoyant * m.gravity.dot(s.tangent);
-    const double pressing = -buoyant * m.gravity.dot(s.normal);
-    const double drag = 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area * std::abs(v) * v;
-    return (along - direction * friction * pressing - drag) /
-           (m.mass + m.added_mass_coefficient * m.fluid_density * m.volume);
-}
+constexpr double infinity = std::numeric_limits<double>::infinity();
 
 int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
-    const auto& p = *static_cast<const TrajectoryIntegrator::Phase*>(data);
+    const auto& f = *static_cast<const TrajectoryIntegrator::Flight*>(data);
     const sunrealtype* Y = N_VGetArrayPointer(y);
     sunrealtype* D = N_VGetArrayPointer(dy);
-    if (p.sliding) {
-        const SlopeSegment& s = p.self->profile().segments()[p.segment];
-        D[0] = Y[1];
-        D[1] = slide_acceleration(p.model, s, Y[1], p.direction, p.friction);
-        D[2] = D[3] = 0.0;
-        return 0;
-    }
-    const Vec2 a = lumped_acceleration(p.model, Vec2(Y[2], Y[3]));
+    const Vec2 a = lumped_acceleration(f.model, Vec2(Y[2], Y[3]));
     D[0] = Y[2];
     D[1] = Y[3];
     D[2] = a.x();
@@ -62,20 +39,10 @@ int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     return 0;
 }
 
-// Flight: the ground (closing), the water level, the profile's two ends (leaving). Slide: the segment's end and
-// start, the speed falling to zero, the water level.
+// The ground (closing), the water level, the profile's two ends (leaving).
 int roots(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
-    const auto& p = *static_cast<const TrajectoryIntegrator::Phase*>(data);
-    const SlopeProfile& profile = p.self->profile();
+    const SlopeProfile& profile = static_cast<const TrajectoryIntegrator::Flight*>(data)->self->profile();
     const sunrealtype* Y = N_VGetArrayPointer(y);
-    if (p.sliding) {
-        const SlopeSegment& s = profile.segments()[p.segment];
-        g[0] = Y[0] - s.length;
-        g[1] = Y[0];
-        g[2] = Y[1];
-        g[3] = s.start.y() + Y[0] * s.tangent.y() - profile.water_level();
-        return 0;
-    }
     const Vec2 x(Y[0], Y[1]);
     g[0] = profile.clearance(x);
     g[1] = x.y() - profile.water_level();
@@ -127,28 +94,14 @@ LumpedModelConfig TrajectoryIntegrator::flight_model(const HazardBlock& block, b
     return m;
 }
 
-Vec2 TrajectoryIntegrator::position(const Phase& p, const double* y) const {
-    if (!p.sliding) return {y[0], y[1]};
-    const SlopeSegment& s = profile_.segments()[p.segment];
-    return s.start + y[0] * s.tangent;
-}
-
-Vec2 TrajectoryIntegrator::velocity(const Phase& p, const double* y) const {
-    if (!p.sliding) return {y[2], y[3]};
-    return y[1] * profile_.segments()[p.segment].tangent;
-}
-
-void TrajectoryIntegrator::start(const Phase& phase, double t, const double* y) {
+void TrajectoryIntegrator::start(const Flight& flight, double t, const Vec2& x, const Vec2& v) {
     sunrealtype* Y = N_VGetArrayPointer(y_);
-    std::copy(y, y + 4, Y);
+    Y[0] = x.x(), Y[1] = x.y(), Y[2] = v.x(), Y[3] = v.y();
     check(CVodeReInit(cvode_, t, y_), "CVodeReInit");
-    check(CVodeSetUserData(cvode_, const_cast<Phase*>(&phase)), "CVodeSetUserData");
+    check(CVodeSetUserData(cvode_, const_cast<Flight*>(&flight)), "CVodeSetUserData");
     check(CVodeSetStopTime(cvode_, settings_.end_time), "CVodeSetStopTime");
-    // Flight: only a closing gap is an impact and only leaving the profile ends it; slide: the ends reached
-    // moving towards them, the speed falling to zero from either side.
-    int flight[4] = {-1, 0, -1, -1};
-    int slide[4] = {1, -1, 0, 0};
-    check(CVodeSetRootDirection(cvode_, phase.sliding ? slide : flight), "CVodeSetRootDirection");
+    int directions[4] = {-1, 0, -1, -1};  // only a closing gap is an impact, only leaving the profile ends it
+    check(CVodeSetRootDirection(cvode_, directions), "CVodeSetRootDirection");
 }
 
 TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2& start_position,
@@ -156,84 +109,147 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
                                            std::mt19937_64& rng, bool record_path) {
     TrajectoryResult out;
     out.stations.assign(stations.size(), {});
-    const double g = settings_.gravity, radius = 0.5 * block.size, mass = block.mass();
-    const double inertia = block.moment_of_inertia();
+    const double radius = 0.5 * block.size, mass = block.mass(), inertia = block.moment_of_inertia();
     const LumpedModelConfig wet = flight_model(block, true), dry = flight_model(block, false);
-    Phase phase;
-    phase.self = this;
-    sunrealtype* Y = N_VGetArrayPointer(y_);
+    const auto& segments = profile_.segments();
+    Flight flight;
+    flight.self = this;
     double t = 0.0;
+    out.max_speed = start_velocity.norm();
 
-    // A flight from x; at the water level (`crossing`) the medium is the one the block is going into.
-    const auto fly = [&](const Vec2& x, const Vec2& v, double spin, bool crossing = false) {
-        phase.sliding = false;
-        phase.model = (crossing ? v.y() < 0.0 : profile_.wet(x.y())) ? wet : dry;
-        phase.spin = spin;
-        const double y[4] = {x.x(), x.y(), v.x(), v.y()};
-        start(phase, t, y);
-    };
-    // Returns false if the block stops (it was at rest and the friction holds it).
-    const auto slide = [&](int k, double s, double v, bool new_friction, bool crossing = false) {
-        const SlopeSegment& seg = profile_.segments()[k];
-        const Material& m = materials_[seg.material];
-        if (new_friction || k != phase.segment)
-            phase.friction = std::tan(m.friction_angle.sample(rng) * std::numbers::pi / 180.0);
-        phase.sliding = true;
-        phase.segment = k;
-        const Vec2 x = seg.start + s * seg.tangent;
-        phase.model = (crossing ? v * seg.tangent.y() < 0.0 : profile_.wet(x.y())) ? wet : dry;
-        if (v == 0.0) {
-            const double along = -g * seg.tangent.y(), pressing = g * seg.normal.y();
-            if (std::abs(along) <= phase.friction * pressing) {
-                Y[0] = s, Y[1] = 0.0;  // where it rests
-                return false;
-            }
-            phase.direction = along > 0.0 ? 1.0 : -1.0;
-        } else {
-            phase.direction = v > 0.0 ? 1.0 : -1.0;
-        }
-        phase.spin = std::abs(v) / radius;
-        const double y[4] = {s, v, 0.0, 0.0};
-        start(phase, t, y);
-        return true;
-    };
-    const auto finish = [&](TrajectoryEnd end) {
+    const auto finish = [&](TrajectoryEnd end, const Vec2& x, const Vec2& v) {
         out.end = end;
         out.t = t;
-        out.position = position(phase, Y);
-        out.velocity = velocity(phase, Y);
+        out.position = x;
+        out.velocity = v;
+        return out;
     };
-    // The state at time tau inside the last step (CVODE's interpolant).
-    const auto state_at = [&](double tau, Vec2& x, Vec2& v) {
-        check(CVodeGetDky(cvode_, tau, 0, dky_), "CVodeGetDky");
-        const sunrealtype* D = N_VGetArrayPointer(dky_);
-        x = position(phase, D);
-        v = velocity(phase, D);
+    const auto cross = [&](std::size_t j, const Vec2& x, double speed, double spin, double height) {
+        StationCrossing& c = out.stations[j];
+        c.crossings += 1;
+        c.speed = std::max(c.speed, speed);
+        c.kinetic_energy = std::max(c.kinetic_energy, 0.5 * mass * speed * speed);
+        c.rotational_energy = std::max(c.rotational_energy, 0.5 * inertia * spin * spin);
+        c.height = std::max(c.height, height);
+        (void)x;
     };
-    const auto record_crossings = [&](double t0, double x0, double t1, double x1) {
+    // The stations strictly after x0 up to x1 (in either direction), by index.
+    const auto stations_between = [&](double x0, double x1, auto visit) {
         if (x0 == x1) return;
-        const double lo = std::min(x0, x1), hi = std::max(x0, x1);
-        auto it = std::upper_bound(stations.begin(), stations.end(), lo);
-        for (; it != stations.end() && *it <= hi; ++it) {
-            // The crossing time by secant on x(t) through the interpolant (x is nearly linear within a step).
-            double ta = t0, xa = x0, tb = t1, xb = x1, tau = t1;
-            Vec2 x, v;
-            for (int iter = 0; iter < 20; ++iter) {
-                tau = ta + (*it - xa) * (tb - ta) / (xb - xa);
-                state_at(tau, x, v);
-                if (std::abs(x.x() - *it) < 1e-9 * (1.0 + std::abs(*it))) break;
-                if ((x.x() - *it) * (xa - *it) > 0.0)
-                    ta = tau, xa = x.x();
-                else
-                    tb = tau, xb = x.x();
+        auto it = std::upper_bound(stations.begin(), stations.end(), std::min(x0, x1));
+        const auto last = std::upper_bound(stations.begin(), stations.end(), std::max(x0, x1));
+        if (x1 > x0) {
+            for (; it != last; ++it) visit(static_cast<std::size_t>(it - stations.begin()));
+        } else {
+            for (auto r = last; r != it;) visit(static_cast<std::size_t>(--r - stations.begin()));
+        }
+    };
+
+    // A flight from x; at the water level (`crossing`) the medium is the one the block is going into.
+    const auto fly = [&](const Vec2& from, const Vec2& v, double spin, bool crossing = false) {
+        flight.model = (crossing ? v.y() < 0.0 : profile_.wet(from.y())) ? wet : dry;
+        flight.spin = spin;
+        // CVODE finds an impact where the clearance changes sign, so a flight must start strictly above the
+        // ground: off an impact or a vertex it starts on it (to round-off), and near a concave vertex the next
+        // segment may rise across its path at once, inside CVODE's first step. Near a vertex ahead (what the
+        // first steps, under 10 ms, can reach), a lift to 1e-12 of the position's size (a few times the round-off
+        // of the impact point) makes that next impact a sign change; elsewhere the block leaves the segment it
+        // is on, and nothing is changed.
+        Vec2 x = from;
+        const double lift = 1e-12 * (1.0 + x.norm());
+        const double ahead = x.x() + (v.x() >= 0.0 ? 1.0 : -1.0) * (0.01 * std::abs(v.x()) + 1e-6);
+        if (const double c = profile_.clearance(x);
+            c < lift && profile_.segment_at(ahead) != profile_.segment_at(x.x()))
+            x += (lift - c) * segments[profile_.segment_at(x.x())].normal;
+        start(flight, t, x, v);
+    };
+
+    // A slide from s along segment k at velocity v along its tangent, in closed form (slide_motion.hpp), from
+    // event to event: the segment's end (a take-off at a convex vertex, the next segment at a concave one), the
+    // water level, rest. Returns true if it ends in a take-off (then `fly` has been called), false if the
+    // trajectory is over (`out` is final).
+    double friction = 0.0;  // tan of the friction angle, drawn when a slide starts or meets a new material
+    const auto slide = [&](int k, double s, double v, bool new_slide) -> bool {
+        int material = -1;
+        bool in_water = profile_.wet((segments[k].start + s * segments[k].tangent).y());
+        if (!new_slide) material = segments[k].material;  // the friction drawn on this material goes on
+        for (;;) {
+            const SlopeSegment& seg = segments[k];
+            if (seg.material != material) {
+                material = seg.material;
+                friction = std::tan(materials_[material].friction_angle.sample(rng) * std::numbers::pi / 180.0);
             }
-            StationCrossing& c = out.stations[it - stations.begin()];
-            const double speed = v.norm(), spin = phase.sliding ? speed / radius : phase.spin;
-            c.crossings += 1;
-            c.speed = std::max(c.speed, speed);
-            c.kinetic_energy = std::max(c.kinetic_energy, 0.5 * mass * speed * speed);
-            c.rotational_energy = std::max(c.rotational_energy, 0.5 * inertia * spin * spin);
-            c.height = std::max(c.height, phase.sliding ? 0.0 : std::max(0.0, profile_.clearance(x)));
+            const LumpedModelConfig& m = in_water ? wet : dry;
+            const double fluid_mass = m.fluid_density * m.volume, buoyant = m.mass - fluid_mass;
+            const double along = buoyant * m.gravity.dot(seg.tangent), pressing = -buoyant * m.gravity.dot(seg.normal);
+            const Vec2 here = seg.start + s * seg.tangent;
+            if (v == 0.0 && std::abs(along) <= friction * pressing) {
+                finish(TrajectoryEnd::rest, here, Vec2::Zero());
+                return false;
+            }
+            const double d = v != 0.0 ? (v > 0.0 ? 1.0 : -1.0) : (along > 0.0 ? 1.0 : -1.0);
+            const double effective_mass = m.mass + m.added_mass_coefficient * fluid_mass;
+            const SlideMotion motion((d * along - friction * pressing) / effective_mass,
+                                     0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area / effective_mass,
+                                     std::abs(v));
+            // The next event along the direction of motion.
+            const double to_end = d > 0.0 ? seg.length - s : s;
+            const double rise = d * seg.tangent.y();  // dz per metre travelled
+            double to_water = infinity;
+            if (rise != 0.0) {
+                const double w = (profile_.water_level() - here.y()) / rise;
+                if (w > 1e-12 * (1.0 + seg.length) && w < to_end) to_water = w;
+            }
+            const double to_stop = motion.stop_distance();
+            const double go = std::min({to_end, to_water, to_stop});
+            double tau = go == to_stop ? motion.stop_time() : motion.time_to(go);
+            const bool timed_out = t + tau >= settings_.end_time;
+            if (timed_out) tau = settings_.end_time - t;
+            const double travelled = timed_out ? motion.distance(tau) : go;
+            const Vec2 there = seg.start + (s + d * travelled) * seg.tangent;
+            stations_between(here.x(), there.x(), [&](std::size_t j) {
+                const double at = motion.time_to(std::abs(stations[j] - here.x()) / std::abs(seg.tangent.x()));
+                const double u = motion.speed(at);
+                cross(j,
+                      seg.start + (s + d * std::abs(stations[j] - here.x()) / std::abs(seg.tangent.x())) * seg.tangent,
+                      u, u / radius, 0.0);
+            });
+            const double u_end = go == to_stop && !timed_out ? 0.0 : motion.speed(tau);
+            out.max_speed = std::max({out.max_speed, std::abs(v), u_end});
+            if (record_path) {
+                if (out.path.empty() || !out.path.back().sliding) out.path.push_back({t, here, v * seg.tangent, true});
+                out.path.push_back({t + tau, there, d * u_end * seg.tangent, true});
+            }
+            t += tau;
+            s += d * travelled;
+            if (timed_out) {
+                finish(TrajectoryEnd::time_limit, there, d * u_end * seg.tangent);
+                return false;
+            }
+            v = d * u_end;
+            if (go == to_stop) {
+                v = 0.0;  // rests if the friction holds, else slides back
+                continue;
+            }
+            if (go == to_water) {
+                in_water = rise < 0.0;  // going down: into the water
+                continue;
+            }
+            // The segment's end.
+            const int next = k + static_cast<int>(d);
+            const Vec2 velocity = v * seg.tangent;
+            if (next < 0 || next >= static_cast<int>(segments.size())) {
+                finish(d > 0.0 ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, there, velocity);
+                return false;
+            }
+            const SlopeSegment& ns = segments[next];
+            if (velocity.dot(ns.normal) > 0.0) {  // convex: the ground falls away, the block takes off
+                fly(there, velocity, std::abs(v) / radius);
+                return true;
+            }
+            k = next;  // concave: it keeps its velocity along the new segment
+            s = d > 0.0 ? 0.0 : ns.length;
+            v = velocity.dot(ns.tangent);
         }
     };
 
@@ -242,115 +258,88 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
     // Released on the ground and not leaving it: a slide from the start (the velocity along the ground).
     if (const int k = profile_.segment_at(start_position.x());
         profile_.clearance(start_position) <= 1e-12 * (1.0 + start_position.norm()) &&
-        start_velocity.dot(profile_.segments()[k].normal) <= 0.0) {
-        const SlopeSegment& seg = profile_.segments()[k];
-        phase.segment = -1;
-        if (!slide(k, (start_position - seg.start).dot(seg.tangent), start_velocity.dot(seg.tangent), true)) {
-            finish(TrajectoryEnd::rest);
-            return out;
-        }
+        start_velocity.dot(segments[k].normal) <= 0.0) {
+        const SlopeSegment& seg = segments[k];
+        if (!slide(k, (start_position - seg.start).dot(seg.tangent), start_velocity.dot(seg.tangent), true)) return out;
     } else {
         fly(start_position, start_velocity, 0.0);
     }
-    out.max_speed = start_velocity.norm();
+
+    sunrealtype* Y = N_VGetArrayPointer(y_);
     std::vector<int> found(4);
     for (;;) {
-        const double t_before = t;
-        const Vec2 x_before = position(phase, Y);
+        const double t_before = t, x_before = Y[0];
         const int flag = CVode(cvode_, settings_.end_time, y_, &t, CV_ONE_STEP);
         check(flag, "CVode");
-        const Vec2 x = position(phase, Y), v = velocity(phase, Y);
-        record_crossings(t_before, x_before.x(), t, x.x());
+        const Vec2 x(Y[0], Y[1]), v(Y[2], Y[3]);
+        if (flag != CV_ROOT_RETURN && profile_.clearance(x) < -1e-6)
+            throw std::logic_error("hazard trajectory: the block passed under the ground at x = " +
+                                   std::to_string(x.x()) + ", t = " + std::to_string(t) + " (an impact missed)");
+        stations_between(x_before, x.x(), [&](std::size_t j) {
+            // The crossing time by secant on x(t) through CVODE's interpolant (x is nearly linear in a step).
+            double ta = t_before, xa = x_before, tb = t, xb = x.x(), tau = t;
+            Vec2 xc = x, vc = v;
+            for (int iter = 0; iter < 20; ++iter) {
+                tau = ta + (stations[j] - xa) * (tb - ta) / (xb - xa);
+                check(CVodeGetDky(cvode_, tau, 0, dky_), "CVodeGetDky");
+                const sunrealtype* D = N_VGetArrayPointer(dky_);
+                xc = Vec2(D[0], D[1]), vc = Vec2(D[2], D[3]);
+                if (std::abs(xc.x() - stations[j]) < 1e-9 * (1.0 + std::abs(stations[j]))) break;
+                if ((xc.x() - stations[j]) * (xa - stations[j]) > 0.0)
+                    ta = tau, xa = xc.x();
+                else
+                    tb = tau, xb = xc.x();
+            }
+            cross(j, xc, vc.norm(), flight.spin, std::max(0.0, profile_.clearance(xc)));
+        });
         out.max_speed = std::max(out.max_speed, v.norm());
-        if (record_path) out.path.push_back({t, x, v, phase.sliding});
-        if (flag == CV_TSTOP_RETURN || t >= settings_.end_time) {
-            finish(TrajectoryEnd::time_limit);
-            return out;
-        }
+        if (record_path) out.path.push_back({t, x, v, false});
+        if (flag == CV_TSTOP_RETURN || t >= settings_.end_time) return finish(TrajectoryEnd::time_limit, x, v);
         if (flag != CV_ROOT_RETURN) continue;
         check(CVodeGetRootInfo(cvode_, found.data()), "CVodeGetRootInfo");
-        if (!phase.sliding) {
-            if (found[2] || found[3]) {
-                finish(found[3] ? TrajectoryEnd::past_end : TrajectoryEnd::past_start);
-                return out;
-            }
-            if (found[0]) {  // an impact
-                const int k = profile_.segment_at(x.x());
-                const SlopeSegment& seg = profile_.segments()[k];
-                const Material& m = materials_[seg.material];
-                Vec2 n = seg.normal;
-                if (m.roughness > 0.0) {  // the segment's angle perturbed, still facing the block
-                    std::normal_distribution<double> rough(0.0, m.roughness * std::numbers::pi / 180.0);
-                    for (int tries = 0; tries < 10; ++tries) {
-                        const double a = rough(rng);
-                        const Vec2 nr(std::cos(a) * n.x() - std::sin(a) * n.y(),
-                                      std::sin(a) * n.x() + std::cos(a) * n.y());
-                        if (v.dot(nr) < 0.0) {
-                            n = nr;
-                            break;
-                        }
+        if (found[2] || found[3]) return finish(found[3] ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, x, v);
+        if (found[0]) {  // an impact
+            const int k = profile_.segment_at(x.x());
+            const SlopeSegment& seg = segments[k];
+            const Material& m = materials_[seg.material];
+            Vec2 n = seg.normal;
+            if (m.roughness > 0.0) {  // the segment's angle perturbed, still facing the block
+                std::normal_distribution<double> rough(0.0, m.roughness * std::numbers::pi / 180.0);
+                for (int tries = 0; tries < 10; ++tries) {
+                    const double a = rough(rng);
+                    const Vec2 nr(std::cos(a) * n.x() - std::sin(a) * n.y(), std::sin(a) * n.x() + std::cos(a) * n.y());
+                    if (v.dot(nr) < 0.0) {
+                        n = nr;
+                        break;
                     }
                 }
-                const Vec2 tangent(n.y(), -n.x());
-                const double vn = v.dot(n), vt = v.dot(tangent);
-                const double rn = m.normal_restitution.sample(rng), rt = m.tangential_restitution.sample(rng);
-                Impact e;
-                e.t = t;
-                e.position = x;
-                e.velocity_before = v;
-                e.wet = profile_.wet(x.y());
-                e.stokes = e.wet ? impact_stokes_number(block.density, std::abs(vn), block.size, water_.viscosity)
-                                 : in_air;
-                const Restitution r = e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes)
-                                            : Restitution{rn, rt};
-                e.normal_restitution = r.normal;
-                e.tangential_restitution = r.tangential;
-                e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;
-                out.impacts.push_back(e);
-                const Vec2 after = e.velocity_after;
-                if (after.dot(seg.normal) < settings_.sliding_speed ||
-                    static_cast<int>(out.impacts.size()) >= settings_.max_impacts) {
-                    if (!slide(k, (x - seg.start).dot(seg.tangent), after.dot(seg.tangent), true)) {
-                        finish(TrajectoryEnd::rest);
-                        return out;
-                    }
-                } else {
-                    fly(x, after, after.dot(seg.tangent) / radius);
-                }
-                continue;
             }
-            if (found[1]) fly(x, v, phase.spin, true);  // into or out of the water
-            continue;
-        }
-        // Sliding.
-        const int k = phase.segment;
-        const SlopeSegment& seg = profile_.segments()[k];
-        const double vs = Y[1];
-        if (found[0] || found[1]) {  // off the segment's end or start
-            const bool forward = found[0] != 0;
-            const int next = k + (forward ? 1 : -1);
-            if (next < 0 || next >= static_cast<int>(profile_.segments().size())) {
-                finish(forward ? TrajectoryEnd::past_end : TrajectoryEnd::past_start);
-                return out;
-            }
-            const SlopeSegment& ns = profile_.segments()[next];
-            const Vec2 vel = vs * seg.tangent;
-            if (vel.dot(ns.normal) > 0.0) {  // a convex vertex: the ground falls away, the block takes off
-                fly(forward ? seg.end : seg.start, vel, phase.spin);
-            } else if (!slide(next, forward ? 0.0 : ns.length, vel.dot(ns.tangent), false)) {
-                finish(TrajectoryEnd::rest);
-                return out;
+            const Vec2 tangent(n.y(), -n.x());
+            const double vn = v.dot(n), vt = v.dot(tangent);
+            const double rn = m.normal_restitution.sample(rng), rt = m.tangential_restitution.sample(rng);
+            Impact e;
+            e.t = t;
+            e.position = x;
+            e.velocity_before = v;
+            e.wet = profile_.wet(x.y());
+            e.stokes =
+                e.wet ? impact_stokes_number(block.density, std::abs(vn), block.size, water_.viscosity) : infinity;
+            const Restitution r =
+                e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes) : Restitution{rn, rt};
+            e.normal_restitution = r.normal;
+            e.tangential_restitution = r.tangential;
+            e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;
+            out.impacts.push_back(e);
+            const Vec2 after = e.velocity_after;
+            if (after.dot(seg.normal) < settings_.sliding_speed ||
+                static_cast<int>(out.impacts.size()) >= settings_.max_impacts) {
+                if (!slide(k, (x - seg.start).dot(seg.tangent), after.dot(seg.tangent), true)) return out;
+            } else {
+                fly(x, after, after.dot(seg.tangent) / radius);
             }
             continue;
         }
-        if (found[2]) {  // stopped: the friction holds it, or it slides back
-            if (!slide(k, Y[0], 0.0, false)) {
-                finish(TrajectoryEnd::rest);
-                return out;
-            }
-            continue;
-        }
-        if (found[3]) slide(k, Y[0], vs, false, true);  // into or out of the water (the same slide, a new medium)
+        if (found[1]) fly(x, v, flight.spin, true);  // into or out of the water
     }
 }
 

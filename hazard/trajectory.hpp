@@ -5,8 +5,9 @@
 // reduced to a point at its lowest face (RocFall's lumped mass). In flight it obeys the Beranger et al. (1998)
 // model of rigidbody/lumped_model.hpp where it is under the water level (gravity, buoyancy, drag C_D, added mass
 // C_a) and gravity alone above it, integrated by SUNDIALS CVODE, whose root finding stops it at the ground, at
-// the water level and at the profile's ends. At the ground the wet rebound law (wet_rebound.hpp) acts on the
-// velocity against the segment, its angle perturbed by the material's roughness:
+// the water level and at the profile's ends. Slides are solved in closed form (slide_motion.hpp). At the ground the wet
+// rebound law (wet_rebound.hpp) acts on the velocity against the segment, its angle perturbed by the material's
+// roughness:
 //   v_n' = -e_n v_n,  v_t' = e_t v_t.
 // A rebound slower than the sliding speed normal to the segment turns into a slide: Coulomb friction on the
 // buoyant weight, drag and added mass in water, along the segment; at a convex vertex it takes off, at a
@@ -101,12 +102,10 @@ public:
     // The flight model at a height z (wet below the water level): the lumped model's constants.
     LumpedModelConfig flight_model(const HazardBlock& block, bool wet) const;
 
-    struct Phase;  // what is being integrated (flight or slide), internal
+    struct Flight;  // what CVODE integrates, internal
 
 private:
-    void start(const Phase& phase, double t, const double* y);
-    Vec2 position(const Phase& phase, const double* y) const;
-    Vec2 velocity(const Phase& phase, const double* y) const;
+    void start(const Flight& flight, double t, const Vec2& x, const Vec2& v);
 
     const SlopeProfile& profile_;
     const std::vector<Material>& materials_;

@@ -1,0 +1,90 @@
+#include "calibration_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "case_reader.hpp"
+#include "hdf5_file.hpp"
+
+namespace chute {
+
+namespace {
+
+const std::vector<CaseKey>& calibration_keys() {
+    using K = KeyType;
+    static const std::vector<CaseKey> keys{
+        {.path = "model", .type = K::section, .required = true, .meaning = "The fitted constants."},
+        {.path = "model.drag_coefficient", .type = K::number, .required = true, .min = above(0.0)},
+        {.path = "model.added_mass_coefficient", .type = K::number, .required = true, .min = at_least(0.0)},
+        {.path = "model.kappa_n", .type = K::number, .required = true, .min = above(0.0), .max = at_most(2.0)},
+        {.path = "model.kappa_t", .type = K::number, .required = true, .min = above(0.0), .max = at_most(2.0)},
+        {.path = "model.beta", .type = K::number, .required = true, .min = at_least(0.0)},
+        {.path = "block", .type = K::section, .required = true},
+        {.path = "block.size", .type = K::number, .required = true, .min = above(0.0), .units = "m"},
+        {.path = "block.density", .type = K::number, .required = true, .min = above(0.0), .units = "kg/m^3"},
+        {.path = "provenance", .type = K::section},
+        {.path = "provenance.date", .type = K::string, .default_value = "''"},
+        {.path = "provenance.command", .type = K::string, .default_value = "''"},
+        {.path = "provenance.runs", .type = K::string, .default_value = "''"},
+        {.path = "provenance.grid", .type = K::string, .default_value = "''"},
+        {.path = "provenance.points", .type = K::string, .default_value = "''"},
+    };
+    return keys;
+}
+
+}  // namespace
+
+CalibrationFile read_calibration_file(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw CaseError(file.string() + ": calibration file not found");
+    std::stringstream text;
+    text << in.rdbuf();
+    static const std::vector<Placeholder> none;
+    CaseReader r(calibration_keys(), none, file.string());
+    r.add_text(text.str());
+    r.check_presence();
+    CalibrationFile c;
+    c.drag_coefficient = r.number("model.drag_coefficient");
+    c.added_mass_coefficient = r.number("model.added_mass_coefficient");
+    c.wet_rebound.kappa_n = r.number("model.kappa_n");
+    c.wet_rebound.kappa_t = r.number("model.kappa_t");
+    c.wet_rebound.beta = r.number("model.beta");
+    c.block_size = r.number("block.size");
+    c.block_density = r.number("block.density");
+    c.date = r.string("provenance.date");
+    c.command = r.string("provenance.command");
+    c.runs = r.string("provenance.runs");
+    c.grid = r.string("provenance.grid");
+    c.points = r.string("provenance.points");
+    return c;
+}
+
+void write_calibration_file(const std::filesystem::path& file, const CalibrationFile& c) {
+    YAML::Emitter y;
+    y.SetDoublePrecision(6);
+    y << YAML::Comment("The wet lumped model's constants for one block, fitted to Chute's CFD runs by "
+                       "`chute calibrate` (hazard/calibration.hpp); read by a hazard case's model.calibration.");
+    y << YAML::BeginMap;
+    y << YAML::Key << "model" << YAML::Value << YAML::BeginMap;
+    y << YAML::Key << "drag_coefficient" << YAML::Value << c.drag_coefficient;
+    y << YAML::Key << "added_mass_coefficient" << YAML::Value << c.added_mass_coefficient;
+    y << YAML::Key << "kappa_n" << YAML::Value << c.wet_rebound.kappa_n;
+    y << YAML::Key << "kappa_t" << YAML::Value << c.wet_rebound.kappa_t;
+    y << YAML::Key << "beta" << YAML::Value << c.wet_rebound.beta;
+    y << YAML::EndMap;
+    y << YAML::Key << "block" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    y << YAML::Key << "size" << YAML::Value << c.block_size;
+    y << YAML::Key << "density" << YAML::Value << c.block_density << YAML::EndMap;
+    y << YAML::Key << "provenance" << YAML::Value << YAML::BeginMap;
+    y << YAML::Key << "date" << YAML::Value << c.date;
+    y << YAML::Key << "command" << YAML::Value << c.command;
+    y << YAML::Key << "runs" << YAML::Value << c.runs;
+    y << YAML::Key << "grid" << YAML::Value << c.grid;
+    y << YAML::Key << "points" << YAML::Value << c.points;
+    y << YAML::EndMap << YAML::EndMap;
+    write_text_atomically(file, std::string(y.c_str()) + "\n");
+}
+
+}  // namespace chute
