@@ -1,0 +1,178 @@
+// The hazard analysis as a run (hazard/monte_carlo, hazard_statistics, hazard_case): the same seed gives the
+// same trajectories on 1 and 2 ranks (compared under unit_np2), statistics that converge as N grows, and case
+// files whose mistakes are named by key.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <string>
+
+#include "case_reader.hpp"
+#include "hazard_case.hpp"
+#include "hazard_statistics.hpp"
+#include "monte_carlo.hpp"
+
+namespace chute {
+namespace {
+
+const std::filesystem::path kExample = std::filesystem::path(CHUTE_SOURCE_DIR) / "examples/fjord_wall";
+
+HazardCase example(long trajectories, unsigned long long seed, double water_level) {
+    HazardCase c = load_hazard_case(kExample / "case.yaml",
+                                    {"trajectories=" + std::to_string(trajectories), "seed=" + std::to_string(seed),
+                                     "water.level=" + std::to_string(water_level), "output.stations=50"});
+    return c;
+}
+
+int world_rank() {
+    int r = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &r);
+    return r;
+}
+
+// The fjord example's trajectories, water and dry, are identical bit for bit on all ranks of MPI_COMM_WORLD and
+// on one (MPI_COMM_SELF), and no block passes under the ground (the integrator throws if one does).
+TEST(HazardRun, SameSeedSameTrajectoriesOnAnyNumberOfRanks) {
+    for (double level : {0.0, -1000.0}) {
+        const HazardCase c = example(600, 11, level);
+        const HazardResults world = run_hazard(c, MPI_COMM_WORLD);
+        if (world_rank() != 0) continue;
+        const HazardResults self = run_hazard(c, MPI_COMM_SELF);
+        ASSERT_EQ(world.outcomes.size(), 600u);
+        ASSERT_EQ(self.outcomes.size(), 600u);
+        for (std::size_t i = 0; i < 600; ++i) {
+            EXPECT_EQ(world.outcomes[i].stop, self.outcomes[i].stop) << i;
+            EXPECT_EQ(world.outcomes[i].time, self.outcomes[i].time) << i;
+            EXPECT_EQ(world.outcomes[i].impacts, self.outcomes[i].impacts) << i;
+            EXPECT_EQ(world.outcomes[i].end, TrajectoryEnd::rest) << i;
+        }
+        for (std::size_t j = 0; j < world.kinetic_energy.size(); ++j) {
+            const double a = world.kinetic_energy[j], b = self.kinetic_energy[j];
+            EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << j;
+        }
+        EXPECT_EQ(world.paths.size(), self.paths.size());
+    }
+}
+
+// Another seed gives other trajectories; a seed is reproducible.
+TEST(HazardRun, SeedsAreReproducibleAndDistinct) {
+    if (world_rank() != 0) GTEST_SKIP() << "one rank is enough";
+    const HazardResults a = run_hazard(example(50, 1, -1000.0), MPI_COMM_SELF);
+    const HazardResults b = run_hazard(example(50, 1, -1000.0), MPI_COMM_SELF);
+    const HazardResults c = run_hazard(example(50, 2, -1000.0), MPI_COMM_SELF);
+    int same = 0;
+    for (std::size_t i = 0; i < 50; ++i) {
+        EXPECT_EQ(a.outcomes[i].stop, b.outcomes[i].stop);
+        same += a.outcomes[i].stop == c.outcomes[i].stop ? 1 : 0;
+    }
+    EXPECT_EQ(same, 0);
+}
+
+// Percentiles converge as N grows: the spread of the dry example's 90th percentile of the stopping x over four
+// seeds shrinks about as 1/sqrt(N) (N = 250 -> 4000: 4 times narrower expected; at least 2 times required, as
+// four seeds estimate a spread to about +-40 %).
+TEST(HazardRun, StoppingPercentilesConverge) {
+    if (world_rank() != 0) GTEST_SKIP() << "one rank is enough";
+    const auto spread = [](long n) {
+        double lo = 1e300, hi = -1e300;
+        for (unsigned long long seed = 1; seed <= 4; ++seed) {
+            const HazardCase c = example(n, seed, -1000.0);
+            const double p90 = summarize(c, run_hazard(c, MPI_COMM_SELF)).stop_p90;
+            lo = std::min(lo, p90), hi = std::max(hi, p90);
+        }
+        return hi - lo;
+    };
+    const double coarse = spread(250), fine = spread(4000);
+    std::printf("p90 stopping x spread over 4 seeds: N = 250: %.3f m, N = 4000: %.3f m\n", coarse, fine);
+    EXPECT_LT(fine, coarse / 2.0);
+}
+
+TEST(HazardRun, PercentileIsNumpysDefault) {
+    EXPECT_DOUBLE_EQ(percentile({1.0, 2.0, 3.0, 4.0}, 0.5), 2.5);
+    EXPECT_DOUBLE_EQ(percentile({4.0, 1.0, 3.0, 2.0}, 0.9), 3.7);
+    EXPECT_DOUBLE_EQ(percentile({1.0, NAN, 3.0}, 1.0), 3.0);
+    EXPECT_TRUE(std::isnan(percentile({}, 0.5)));
+}
+
+// Mistakes in a hazard case: each is a CaseError naming the key.
+std::string error_of(const std::string& yaml) {
+    try {
+        (void)hazard_case_from_text(yaml, kExample);
+    } catch (const CaseError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+const std::string kGood =
+    "profile: {points: [[0, 10], [10, 0], [30, 0]]}\n"
+    "materials: {rock: {}}\n"
+    "block: {size: {value: 0.3}}\n"
+    "release: {x: {value: 1.0}}\n";
+
+TEST(HazardRun, CaseMistakesNameTheKey) {
+    EXPECT_EQ(error_of(kGood), "no error");
+    const auto expect = [](const std::string& yaml, const std::string& key, const std::string& words) {
+        const std::string e = error_of(yaml);
+        EXPECT_NE(e.find(key), std::string::npos) << e;
+        EXPECT_NE(e.find(words), std::string::npos) << e;
+    };
+    expect(kGood + "trajectorys: 10\n", "trajectorys", "unknown key");
+    expect("profile: {points: [[0, 10], [10, 0], [5, -1]]}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+           "release: {x: {value: 1.0}}\n",
+           "profile.points", "folds the profile back");
+    expect("profile: {points: [[0, 10], [10, 0]], file: profile.csv}\nmaterials: {rock: {}}\n"
+           "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
+           "profile", "either profile.points or profile.file");
+    expect("profile: {file: missing.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+           "release: {x: {value: 1.0}}\n",
+           "profile.file", "missing.csv");
+    expect("profile: {file: profile.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+           "release: {x: {value: 1.0}}\n",
+           "profile.file (row 22)", "unknown material 'talus'");
+    expect(kGood + "block: {size: {value: 0.3}, density: {value: 900}}\n", "block", "given twice");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\nwater: {level: 5}\n"
+        "block: {size: {value: 0.3}, density: {value: 900}}\nrelease: {x: {value: 1.0}}\n",
+        "block.density", "floats");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {distribution: normal, mean: 0.3, sd: 0.1}}\nrelease: {x: {value: 1.0}}\n",
+        "block.size.min", "truncate it");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {distribution: uniform, min: 0.5, max: 0.2}}\nrelease: {x: {value: 1.0}}\n",
+        "block.size.max", "must be above");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {distribution: normal, mean: 0.3, sd: -0.1, min: 0.1}}\nrelease: {x: {value: 1.0}}\n",
+        "block.size.sd", "must be");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {distribution: gamma, mean: 0.3}}\nrelease: {x: {value: 1.0}}\n",
+        "block.size.distribution", "gamma");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {distribution: uniform, min: 0.2}}\nrelease: {x: {value: 1.0}}\n",
+        "block.size.max", "missing");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\n"
+        "materials: {rock: {normal_restitution: {distribution: normal, mean: 0.8, sd: 0.2, min: 0.3}}}\n"
+        "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
+        "materials.rock.normal_restitution.max", "at most 1");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\n"
+        "block: {size: {value: 0.3}}\nrelease: {x: {distribution: uniform, min: 1, max: 40}}\n",
+        "release.x", "inside the profile");
+    expect(kGood + "collectors: {pipe: {x: 50}}\n", "collectors.pipe.x", "inside the profile");
+    expect("profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\nrelease: {x: {value: 1.0}}\n",
+           "block", "missing");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}, mud: {}}\n"
+        "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
+        "profile.material", "several materials");
+    expect(kGood + "model: {calibration: nothing.yaml}\n", "model.calibration", "not found");
+}
+
+}  // namespace
+}  // namespace chute
