@@ -39,7 +39,8 @@ int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     return 0;
 }
 
-// The ground (closing), the water level, the profile's two ends (leaving).
+// The ground (closing), the water level, the profile's two ends (leaving), and the apex of a bounce (the
+// velocity normal to the ground under the block turning from rising to falling).
 int roots(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
     const SlopeProfile& profile = static_cast<const TrajectoryIntegrator::Flight*>(data)->self->profile();
     const sunrealtype* Y = N_VGetArrayPointer(y);
@@ -48,6 +49,7 @@ int roots(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
     g[1] = x.y() - profile.water_level();
     g[2] = x.x() - profile.x_min();
     g[3] = profile.x_max() - x.x();
+    g[4] = Vec2(Y[2], Y[3]).dot(profile.segments()[profile.segment_at(x.x())].normal);
     return 0;
 }
 
@@ -69,7 +71,7 @@ TrajectoryIntegrator::TrajectoryIntegrator(const SlopeProfile& profile, const st
     check(CVodeSStolerances(cvode_, settings_.relative_tolerance, settings_.absolute_tolerance), "CVodeSStolerances");
     check(CVodeSetNonlinearSolver(cvode_, solver_), "CVodeSetNonlinearSolver");
     check(CVodeSetMaxNumSteps(cvode_, 1000000), "CVodeSetMaxNumSteps");
-    check(CVodeRootInit(cvode_, 4, roots), "CVodeRootInit");
+    check(CVodeRootInit(cvode_, 5, roots), "CVodeRootInit");
 }
 
 TrajectoryIntegrator::~TrajectoryIntegrator() {
@@ -100,7 +102,7 @@ void TrajectoryIntegrator::start(const Flight& flight, double t, const Vec2& x, 
     check(CVodeReInit(cvode_, t, y_), "CVodeReInit");
     check(CVodeSetUserData(cvode_, const_cast<Flight*>(&flight)), "CVodeSetUserData");
     check(CVodeSetStopTime(cvode_, settings_.end_time), "CVodeSetStopTime");
-    int directions[4] = {-1, 0, -1, -1};  // only a closing gap is an impact, only leaving the profile ends it
+    int directions[5] = {-1, 0, -1, -1, -1};  // only a closing gap is an impact, only leaving the profile ends it
     check(CVodeSetRootDirection(cvode_, directions), "CVodeSetRootDirection");
 }
 
@@ -266,7 +268,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
     }
 
     sunrealtype* Y = N_VGetArrayPointer(y_);
-    std::vector<int> found(4);
+    std::vector<int> found(5);
     for (;;) {
         const double t_before = t, x_before = Y[0];
         const int flag = CVode(cvode_, settings_.end_time, y_, &t, CV_ONE_STEP);
@@ -340,6 +342,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             continue;
         }
         if (found[1]) fly(x, v, flight.spin, true);  // into or out of the water
+        if (found[4] && !found[1]) out.apexes.push_back({t, x, profile_.clearance(x)});  // flies on
     }
 }
 

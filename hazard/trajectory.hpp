@@ -68,6 +68,13 @@ struct Impact {
     double normal_restitution = 0.0, tangential_restitution = 0.0;
 };
 
+// The top of a bounce: where the block stops rising from the ground under it.
+struct Apex {
+    double t = 0.0;
+    Vec2 position = Vec2::Zero();
+    double height = 0.0;  // above the ground, normal to it
+};
+
 struct PathSample {
     double t;
     Vec2 position, velocity;
@@ -80,6 +87,7 @@ struct TrajectoryResult {
     Vec2 position = Vec2::Zero(), velocity = Vec2::Zero();  // where it stopped or left
     double max_speed = 0.0;
     std::vector<Impact> impacts;
+    std::vector<Apex> apexes;
     std::vector<StationCrossing> stations;  // one per station given
     std::vector<PathSample> path;           // every integration step, if asked for
 };

@@ -492,6 +492,19 @@ std::vector<double> CaseReader::number_list(std::string_view path) const {
     return v;
 }
 
+std::vector<std::string> CaseReader::string_list(std::string_view path) const {
+    const CaseKey& k = key(path, KeyType::string_list);
+    const YAML::Node n = node(path, k);
+    if (!n.IsSequence()) fail(path, "expected a list of texts like [a, b], got " + describe(n), &n);
+    std::vector<std::string> v;
+    for (const auto& element : n) {
+        if (!element.IsScalar())
+            fail(indexed(path, v.size()), "expected a text, got " + describe(element), &element);
+        v.push_back(element.Scalar());
+    }
+    return v;
+}
+
 std::vector<std::array<double, 2>> CaseReader::point_list(std::string_view path) const {
     const CaseKey& k = key(path, KeyType::point_list);
     const YAML::Node n = node(path, k);
@@ -555,6 +568,9 @@ std::string markdown_table(const std::vector<CaseKey>& keys) {
                 break;
             case KeyType::number_list:
                 type = "list of numbers";
+                break;
+            case KeyType::string_list:
+                type = "list of texts";
                 break;
             case KeyType::point_list:
                 type = "list of [x, y]";

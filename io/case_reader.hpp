@@ -51,6 +51,7 @@ enum class KeyType {
     vector2,          // [number, number]
     integer_vector2,  // [integer, integer]
     number_list,      // [number, ...]
+    string_list,      // [text, ...]
     point_list,       // [[x, y], ...]
     number_or_auto,   // the word auto or a number
 };
@@ -120,6 +121,7 @@ public:
     std::array<double, 2> vector2(std::string_view path) const;
     std::array<int, 2> integer_vector2(std::string_view path) const;
     std::vector<double> number_list(std::string_view path) const;
+    std::vector<std::string> string_list(std::string_view path) const;
     std::vector<std::array<double, 2>> point_list(std::string_view path) const;
     std::optional<double> number_or_auto(std::string_view path) const;
     // A choice as an enum value: choice<ReboundLaw>("contact.law", {{"lumped", ReboundLaw::lumped}, ...}).

@@ -97,6 +97,7 @@ TEST(Hazard, DryBouncesAreParabolas) {
         EXPECT_NEAR(r.impacts[k].position.y(), 0.0, 1e-9) << k;
         EXPECT_NEAR(r.impacts[k].velocity_before.y(), -w, 1e-9) << k;
         w *= rn, u *= rt;
+        EXPECT_NEAR(r.apexes[k].height, w * w / (2.0 * g), 1e-9) << k;  // the bounce's top, found as a root
         t += 2.0 * w / g, x += u * 2.0 * w / g;
     }
 }
