@@ -3,6 +3,8 @@
 //             [--sweep key.path=v1,v2,... ...]   one run per combination, in DIR/<key>=<value>,...
 //   chute hazard CASE.yaml [--out DIR] [--set key.path=value ...] [--no-plots]
 //             a rockfall hazard analysis over a slope profile (hazard/; keys: docs/hazard-case-file.md)
+//   chute calibrate SPEC.yaml [--out DIR] [--redo]
+//             the CFD runs of one block and the wet lumped model's constants fitted to them (hazard/calibration.hpp)
 //   chute keys [--hazard] prints every case-file key (the table of docs/case-file.md, or of the hazard case)
 #include <HYPRE_utilities.h>
 #include <mpi.h>
@@ -18,6 +20,7 @@
 #include <sstream>
 #include <thread>
 
+#include "calibrate_command.hpp"
 #include "case_file.hpp"
 #include "hazard_case.hpp"
 #include "hazard_command.hpp"
@@ -26,68 +29,11 @@
 #include "output_error.hpp"
 #include "plausibility.hpp"
 #include "restart_state.hpp"
+#include "run_command.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
 
 namespace {
-
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// The case as run: the file as written, followed by the --set overrides applied to it.
-std::string case_as_run(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    std::string text = read_file(file);
-    if (!overrides.empty()) {
-        text += "\n# Overrides given on the command line (--set), applied on top of the keys above:\n";
-        for (const auto& o : overrides) text += "#   " + o + "\n";
-    }
-    return text;
-}
-
-int run_command(const std::filesystem::path& case_file, const std::filesystem::path& out_dir,
-                const std::vector<std::string>& overrides, const std::string& restart, bool no_plots) {
-    int rank = 0, size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    chute::CaseConfig config = chute::load_case(case_file, overrides);
-    if (no_plots) config.plots = false;
-    chute::RunOptions options;
-    options.out_dir = out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
-    if (!restart.empty()) options.restart = chute::restart_checkpoint(restart, rank == 0);
-    options.case_yaml = case_as_run(case_file, overrides);
-    if (rank == 0)
-        std::printf("chute: case '%s', %d x %d cells on %d rank(s), t_end = %g s, results in %s\n", config.name.c_str(),
-                    config.x.cells, config.y.cells, size, config.end_time, options.out_dir.string().c_str());
-    if (rank == 0)
-        for (const std::string& w : chute::plausibility_warnings(config))
-            std::fprintf(stderr, "chute: warning: %s\n", w.c_str());
-    std::fflush(stdout);  // the header is out before anything else happens, even when stdout is a file
-    chute::install_stop_handlers(options.out_dir);
-    std::signal(SIGXFSZ, SIG_IGN);  // past `ulimit -f` a write then fails (EFBIG) and is reported, not killed
-    const chute::RunSummary summary = chute::run_simulation(config, options, MPI_COMM_WORLD);
-    if (rank == 0) {
-        const std::string text = chute::format_summary(summary, 1LL * config.x.cells * config.y.cells);
-        std::printf("%s", text.c_str());
-        chute::write_text_atomically(options.out_dir / "summary.txt", text);
-        if (config.plots) {
-            const std::string cmd =
-                "/usr/bin/python3 " CHUTE_PYTHON_DIR "/plot_run.py '" + options.out_dir.string() + "'";
-            if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "chute: plotting failed (results are complete)\n");
-        }
-    }
-    if (summary.stopped_by_signal) {
-        if (rank == 0)
-            std::printf("chute: stopped early; continue with: chute run %s --out %s --restart %s\n",
-                        case_file.string().c_str(), options.out_dir.string().c_str(),
-                        summary.last_checkpoint.string().c_str());
-        return 128 + summary.stopped_by_signal;  // the shell's convention for "ended by signal N"
-    }
-    return 0;
-}
 
 // A --sweep value "key=v1,v2,...": the key and its values. Commas inside [] or {} belong to a value, so
 // vectors sweep too: bodies.block.centre=[0, 1],[0, 2].
@@ -197,6 +143,13 @@ int main(int argc, char** argv) {
     hazard->add_option("--out", hazard_out, "results folder (default results/<case name>)");
     hazard->add_option("--set", hazard_overrides, "override a key: --set trajectories=10000 (repeatable)");
     hazard->add_flag("--no-plots", hazard_no_plots, "do not make the PNG plots");
+    auto* calibrate = app.add_subcommand("calibrate", "calibrate the wet lumped model by CFD runs of one block");
+    std::filesystem::path spec_file, calibrate_out;
+    bool redo = false;
+    calibrate->add_option("spec", spec_file, "calibration spec (YAML: the runs)")->required();
+    calibrate->add_option("--out", calibrate_out,
+                          "folder of the runs and the fit (default results/calibration/<name>)");
+    calibrate->add_flag("--redo", redo, "make every run again even if its folder holds it");
     auto* keys = app.add_subcommand("keys", "print every case-file key with its type, default and range");
     bool hazard_keys = false;
     keys->add_flag("--hazard", hazard_keys, "the keys of a hazard case");
@@ -205,7 +158,11 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
         if (*keys) {
-            if (rank == 0) std::cout << (hazard_keys ? chute::hazard_keys_markdown() : chute::schema_markdown());
+            if (rank == 0)
+                std::cout << (hazard_keys ? chute::hazard_keys_markdown() + "\n" + calibration_spec_keys_markdown()
+                                          : chute::schema_markdown());
+        } else if (*calibrate) {
+            code = calibrate_command(spec_file, calibrate_out, redo);
         } else if (*hazard) {
             code = hazard_command(hazard_case, hazard_out, hazard_overrides, hazard_no_plots);
         } else {

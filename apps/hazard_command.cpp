@@ -4,11 +4,8 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
-
 #include "hazard_outputs.hpp"
-#include "hdf5_file.hpp"
+#include "run_command.hpp"
 
 int hazard_command(const std::filesystem::path& case_file, const std::filesystem::path& out_dir,
                    const std::vector<std::string>& overrides, bool no_plots) {
@@ -26,15 +23,7 @@ int hazard_command(const std::filesystem::path& case_file, const std::filesystem
     const chute::HazardResults results = chute::run_hazard(c, MPI_COMM_WORLD, true);
     if (rank != 0) return 0;
     const chute::HazardSummary summary = chute::summarize(c, results);
-    std::ifstream in(case_file);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string case_text = text.str();
-    if (!overrides.empty()) {
-        case_text += "\n# Overrides given on the command line (--set), applied on top of the keys above:\n";
-        for (const auto& o : overrides) case_text += "#   " + o + "\n";
-    }
-    chute::write_hazard_outputs(c, results, summary, case_text, size, out);
+    chute::write_hazard_outputs(c, results, summary, case_as_run(case_file, overrides), size, out);
     std::printf("%s", chute::format_hazard_summary(c, summary, results.seconds, size).c_str());
     if (c.plots) {
         const std::string cmd = "/usr/bin/python3 " CHUTE_PYTHON_DIR "/hazard/plot_hazard.py '" + out.string() + "'";

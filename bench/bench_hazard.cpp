@@ -36,8 +36,9 @@ int main(int argc, char** argv) {
             path = a;
     }
     if (rank == 0) {
-        std::printf("| case | water level | ranks | trajectories | segments | best s | trajectories/s | impacts per "
-                    "trajectory | runs (s) |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::printf(
+            "| case | water level | ranks | trajectories | segments | best s | trajectories/s | impacts per "
+            "trajectory | runs (s) |\n|---|---|---|---|---|---|---|---|---|\n");
     }
     for (const char* level : {"0.0", "-1000.0"}) {
         const HazardCase c = load_hazard_case(path, {"trajectories=" + std::to_string(trajectories),

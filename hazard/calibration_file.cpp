@@ -64,8 +64,9 @@ CalibrationFile read_calibration_file(const std::filesystem::path& file) {
 void write_calibration_file(const std::filesystem::path& file, const CalibrationFile& c) {
     YAML::Emitter y;
     y.SetDoublePrecision(6);
-    y << YAML::Comment("The wet lumped model's constants for one block, fitted to Chute's CFD runs by "
-                       "`chute calibrate` (hazard/calibration.hpp); read by a hazard case's model.calibration.");
+    y << YAML::Comment(
+        "The wet lumped model's constants for one block, fitted to Chute's CFD runs by "
+        "`chute calibrate` (hazard/calibration.hpp); read by a hazard case's model.calibration.");
     y << YAML::BeginMap;
     y << YAML::Key << "model" << YAML::Value << YAML::BeginMap;
     y << YAML::Key << "drag_coefficient" << YAML::Value << c.drag_coefficient;

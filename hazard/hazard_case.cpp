@@ -53,7 +53,11 @@ const Schema& schema() {
              .default_doc = "none (all dry)",
              .units = "m",
              .meaning = "z of the water surface: segments and flight below it are wet."},
-            {.path = "water.density", .type = K::number, .default_value = "1000.0", .min = above(0.0), .units = "kg/m^3"},
+            {.path = "water.density",
+             .type = K::number,
+             .default_value = "1000.0",
+             .min = above(0.0),
+             .units = "kg/m^3"},
             {.path = "water.viscosity",
              .type = K::number,
              .default_value = "1.0e-3",
@@ -75,12 +79,18 @@ const Schema& schema() {
             {.path = "materials", .type = K::section, .required = true, .meaning = "The ground's materials."},
             {.path = "materials.<material>", .type = K::section, .meaning = "One material, named by the case."},
         });
-        dist("materials.<material>.normal_restitution", "", "Dry normal coefficient of restitution Rn, drawn at "
-             "each impact.", "0.8");
-        dist("materials.<material>.tangential_restitution", "", "Dry tangential coefficient of restitution Rt, "
-             "drawn at each impact.", "0.8");
-        dist("materials.<material>.friction_angle", "degrees", "Friction angle of a sliding block, drawn when a "
-             "slide starts.", "30");
+        dist("materials.<material>.normal_restitution", "",
+             "Dry normal coefficient of restitution Rn, drawn at "
+             "each impact.",
+             "0.8");
+        dist("materials.<material>.tangential_restitution", "",
+             "Dry tangential coefficient of restitution Rt, "
+             "drawn at each impact.",
+             "0.8");
+        dist("materials.<material>.friction_angle", "degrees",
+             "Friction angle of a sliding block, drawn when a "
+             "slide starts.",
+             "30");
         add({{.path = "materials.<material>.roughness",
               .type = K::number,
               .default_value = "0.0",
@@ -193,8 +203,7 @@ double model_number(const CaseReader& r, const char* key, const CalibrationFile*
     return r.present(key) || calibration == nullptr ? r.number(key) : from_file;
 }
 
-HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name,
-                            const std::filesystem::path& folder) {
+HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name, const std::filesystem::path& folder) {
     r.check_presence();
     HazardCase c;
     c.name = r.present("name") ? r.string("name") : default_name;
@@ -241,7 +250,8 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
         const int m = r.present("profile.material") ? material_of(r.string("profile.material"), "profile.material") : 0;
         c.segment_materials.assign(c.profile_points.empty() ? 0 : c.profile_points.size() - 1, m);
     } else {
-        if (r.present("profile.material")) r.fail("profile.material", "not used with profile.file (its material column)");
+        if (r.present("profile.material"))
+            r.fail("profile.material", "not used with profile.file (its material column)");
         const std::filesystem::path csv = folder / r.string("profile.file");
         ProfileTable table;
         try {
@@ -273,8 +283,7 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
         }
     }
     const CalibrationFile* cal = calibration ? &*calibration : nullptr;
-    c.settings.drag_coefficient =
-        model_number(r, "model.drag_coefficient", cal, cal ? cal->drag_coefficient : 0.0);
+    c.settings.drag_coefficient = model_number(r, "model.drag_coefficient", cal, cal ? cal->drag_coefficient : 0.0);
     c.settings.added_mass_coefficient =
         model_number(r, "model.added_mass_coefficient", cal, cal ? cal->added_mass_coefficient : 0.0);
     c.settings.wet_rebound.kappa_n = model_number(r, "model.kappa_n", cal, cal ? cal->wet_rebound.kappa_n : 0.0);
@@ -288,9 +297,11 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
     // Blocks and their release.
     c.block.size = read_distribution(r, "block.size", {.above = 0.0}, true);
     c.block.density = read_distribution(r, "block.density", {.above = 0.0});
-    const bool any_water = c.water_level > std::min_element(c.profile_points.begin(), c.profile_points.end(),
-                                                            [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); })
-                                               ->y();
+    const bool any_water =
+        c.water_level >
+        std::min_element(c.profile_points.begin(), c.profile_points.end(), [](const Vec2& a, const Vec2& b) {
+            return a.y() < b.y();
+        })->y();
     if (any_water && !(c.block.density.lowest() > c.water.density))
         r.fail("block.density", "a block no denser than the water (" + exact_text(c.water.density) +
                                     " kg/m^3) floats: every draw must be denser");

@@ -32,9 +32,9 @@ std::string format(const char* f, auto... args) {
 
 std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, double seconds, int ranks) {
     const SlopeProfile profile = c.profile();
-    std::string t = format("hazard '%s': %ld trajectories over %zu segments in %.2f s on %d rank(s) (%.0f per s)\n",
-                           c.name.c_str(), s.trajectories, profile.segments().size(), seconds, ranks,
-                           s.trajectories / std::max(seconds, 1e-9));
+    std::string t =
+        format("hazard '%s': %ld trajectories over %zu segments in %.2f s on %d rank(s) (%.0f per s)\n", c.name.c_str(),
+               s.trajectories, profile.segments().size(), seconds, ranks, s.trajectories / std::max(seconds, 1e-9));
     t += format("  water level %s; model C_D %.4g, C_a %.4g, kappa_n %.4g, kappa_t %.4g, beta %.4g%s\n",
                 c.water_level > -1e29 ? format("%.6g m", c.water_level).c_str() : "none (dry)",
                 c.settings.drag_coefficient, c.settings.added_mass_coefficient, c.settings.wet_rebound.kappa_n,
@@ -45,10 +45,11 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
     t += format("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,
                 s.stop_p95, s.stop_p99, s.stop_max);
     for (const CollectorSummary& k : s.collectors)
-        t += format("  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g); hit energy "
-                    "mean %.4g J, p50 %.4g, p95 %.4g, max %.4g\n",
-                    k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits,
-                    k.hit_probability, k.energy_mean, k.energy_p50, k.energy_p95, k.energy_max);
+        t += format(
+            "  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g); hit energy "
+            "mean %.4g J, p50 %.4g, p95 %.4g, max %.4g\n",
+            k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits, k.hit_probability,
+            k.energy_mean, k.energy_p50, k.energy_p95, k.energy_max);
     return t;
 }
 
@@ -58,8 +59,9 @@ void write_hazard_outputs(const HazardCase& c, const HazardResults& r, const Haz
     write_text_atomically(out / "case.yaml", case_text);
     write_text_atomically(out / "summary.txt", format_hazard_summary(c, s, r.seconds, ranks));
 
-    std::string t = "index,size,density,release_x,release_z,release_u,release_w,end,time,stop_x,stop_z,max_speed,"
-                    "impacts\n";
+    std::string t =
+        "index,size,density,release_x,release_z,release_u,release_w,end,time,stop_x,stop_z,max_speed,"
+        "impacts\n";
     for (std::size_t i = 0; i < r.outcomes.size(); ++i) {
         const TrajectoryOutcome& o = r.outcomes[i];
         t += format("%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%.9g,%.9g,%.9g,%.9g,%d\n", i, o.size, o.density,
@@ -79,8 +81,8 @@ void write_hazard_outputs(const HazardCase& c, const HazardResults& r, const Haz
     t = "name,x,height,passing,hits,hit_probability,energy_mean,energy_p50,energy_p95,energy_max\n";
     for (const CollectorSummary& k : s.collectors)
         t += format("%s,%.9g,%.9g,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g\n", k.collector.name.c_str(), k.collector.x,
-                    k.collector.height, k.passing, k.hits, k.hit_probability, k.energy_mean, k.energy_p50,
-                    k.energy_p95, k.energy_max);
+                    k.collector.height, k.passing, k.hits, k.hit_probability, k.energy_mean, k.energy_p50, k.energy_p95,
+                    k.energy_max);
     write_text_atomically(out / "collectors.csv", t);
 
     t = "trajectory,t,x,z,speed,sliding\n";

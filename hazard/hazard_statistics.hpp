@@ -28,7 +28,7 @@ struct StationSummary {
 struct CollectorSummary {
     Collector collector;
     long passing = 0, hits = 0;
-    double hit_probability = 0.0;  // hits / all blocks
+    double hit_probability = 0.0;                                                    // hits / all blocks
     double energy_mean = 0.0, energy_p50 = 0.0, energy_p95 = 0.0, energy_max = 0.0;  // J, of the hits
 };
 

@@ -39,8 +39,8 @@ HazardResults run_hazard(const HazardCase& c, MPI_Comm comm, bool progress) {
 
     const int S = c.stations, C = static_cast<int>(c.collectors.size());
     const int stride = kScalars + 4 * S + 3 * C;
-    std::vector<double> mine;    // this rank's trajectories, `stride` doubles each
-    std::vector<double> paths;   // rows of 6
+    std::vector<double> mine;   // this rank's trajectories, `stride` doubles each
+    std::vector<double> paths;  // rows of 6
     TrajectoryIntegrator integrator(profile, c.materials, c.water, c.settings);
     long done = 0;
     auto last_print = started;
@@ -55,9 +55,19 @@ HazardResults run_hazard(const HazardCase& c, MPI_Comm comm, bool progress) {
         const bool keep_path = i < c.paths;
         const TrajectoryResult r = integrator.run(block, release, v0, sorted, rng, keep_path);
 
-        std::vector<double> row{static_cast<double>(i), block.size, block.density, release.x(), release.y(),
-                                v0.x(), v0.y(), static_cast<double>(r.end), r.t, r.position.x(), r.position.y(),
-                                r.max_speed, static_cast<double>(r.impacts.size())};
+        std::vector<double> row{static_cast<double>(i),
+                                block.size,
+                                block.density,
+                                release.x(),
+                                release.y(),
+                                v0.x(),
+                                v0.y(),
+                                static_cast<double>(r.end),
+                                r.t,
+                                r.position.x(),
+                                r.position.y(),
+                                r.max_speed,
+                                static_cast<double>(r.impacts.size())};
         row.resize(stride, nan);
         for (std::size_t j = 0; j < order.size(); ++j) {
             const StationCrossing& s = r.stations[j];
@@ -141,8 +151,8 @@ HazardResults run_hazard(const HazardCase& c, MPI_Comm comm, bool progress) {
         }
     }
     for (std::size_t at = 0; at < all_paths.size(); at += 6)
-        out.paths.push_back({all_paths[at], all_paths[at + 1], all_paths[at + 2], all_paths[at + 3],
-                             all_paths[at + 4], all_paths[at + 5]});
+        out.paths.push_back({all_paths[at], all_paths[at + 1], all_paths[at + 2], all_paths[at + 3], all_paths[at + 4],
+                             all_paths[at + 5]});
     std::stable_sort(out.paths.begin(), out.paths.end(),
                      [](const auto& a, const auto& b) { return a[0] < b[0]; });  // each path's rows stay in time order
     return out;

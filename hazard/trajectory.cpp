@@ -255,7 +255,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
         }
     };
 
-    if (profile_.clearance(start_position) < 0.0)
+    if (profile_.clearance(start_position) < -1e-12 * (1.0 + start_position.norm()))  // on it to round-off is on it
         throw std::invalid_argument("the release point lies below the ground");
     // Released on the ground and not leaving it: a slide from the start (the velocity along the ground).
     if (const int k = profile_.segment_at(start_position.x());
@@ -341,7 +341,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             }
             continue;
         }
-        if (found[1]) fly(x, v, flight.spin, true);  // into or out of the water
+        if (found[1]) fly(x, v, flight.spin, true);                                      // into or out of the water
         if (found[4] && !found[1]) out.apexes.push_back({t, x, profile_.clearance(x)});  // flies on
     }
 }

@@ -498,8 +498,7 @@ std::vector<std::string> CaseReader::string_list(std::string_view path) const {
     if (!n.IsSequence()) fail(path, "expected a list of texts like [a, b], got " + describe(n), &n);
     std::vector<std::string> v;
     for (const auto& element : n) {
-        if (!element.IsScalar())
-            fail(indexed(path, v.size()), "expected a text, got " + describe(element), &element);
+        if (!element.IsScalar()) fail(indexed(path, v.size()), "expected a text, got " + describe(element), &element);
         v.push_back(element.Scalar());
     }
     return v;

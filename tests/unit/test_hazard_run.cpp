@@ -5,8 +5,11 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
+#include "calibration.hpp"
 #include "case_reader.hpp"
 #include "hazard_case.hpp"
 #include "hazard_statistics.hpp"
@@ -118,18 +121,22 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
         EXPECT_NE(e.find(words), std::string::npos) << e;
     };
     expect(kGood + "trajectorys: 10\n", "trajectorys", "unknown key");
-    expect("profile: {points: [[0, 10], [10, 0], [5, -1]]}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
-           "release: {x: {value: 1.0}}\n",
-           "profile.points", "folds the profile back");
-    expect("profile: {points: [[0, 10], [10, 0]], file: profile.csv}\nmaterials: {rock: {}}\n"
-           "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
-           "profile", "either profile.points or profile.file");
-    expect("profile: {file: missing.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
-           "release: {x: {value: 1.0}}\n",
-           "profile.file", "missing.csv");
-    expect("profile: {file: profile.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
-           "release: {x: {value: 1.0}}\n",
-           "profile.file (row 22)", "unknown material 'talus'");
+    expect(
+        "profile: {points: [[0, 10], [10, 0], [5, -1]]}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+        "release: {x: {value: 1.0}}\n",
+        "profile.points", "folds the profile back");
+    expect(
+        "profile: {points: [[0, 10], [10, 0]], file: profile.csv}\nmaterials: {rock: {}}\n"
+        "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
+        "profile", "either profile.points or profile.file");
+    expect(
+        "profile: {file: missing.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+        "release: {x: {value: 1.0}}\n",
+        "profile.file", "missing.csv");
+    expect(
+        "profile: {file: profile.csv}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}}\n"
+        "release: {x: {value: 1.0}}\n",
+        "profile.file (row 22)", "unknown material 'talus'");
     expect(kGood + "block: {size: {value: 0.3}, density: {value: 900}}\n", "block", "given twice");
     expect(
         "profile: {points: [[0, 10], [10, 0], [30, 0]]}\nmaterials: {rock: {}}\nwater: {level: 5}\n"
@@ -172,6 +179,85 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
         "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
         "profile.material", "several materials");
     expect(kGood + "model: {calibration: nothing.yaml}\n", "model.calibration", "not found");
+}
+
+}  // namespace
+}  // namespace chute
+
+namespace chute {
+namespace {
+
+// The calibration's fits recover the constants of observations made by the lumped model itself: a free fall
+// from the closed form with C_D 1.8 and C_a 0.9, bed bounces made with kappa_n 0.7 (hazard/calibration.hpp).
+TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
+    const BlockFluid fluid;
+    const double size = 0.3, density = 2500.0;
+    LumpedModelConfig m;
+    m.volume = size * size * size;
+    m.mass = density * m.volume;
+    m.frontal_area = size * size;
+    m.fluid_density = fluid.fluid_density;
+    m.drag_coefficient = 1.8;
+    m.added_mass_coefficient = 0.9;
+    const BerangerFreeFall closed = beranger_free_fall(m);
+    FreeFallObservation fall;
+    for (double t = 0.0; t <= 6.0; t += 0.002) fall.t.push_back(t), fall.speed.push_back(closed.speed(t));
+    fall.terminal_speed = closed.terminal_speed;  // the observation's last 0.5 s, at the terminal speed
+    WetRebound truth;
+    truth.kappa_n = 0.7;
+    std::vector<BounceObservation> bounces;
+    for (double speed : {1.2, 1.7, 2.2}) {
+        BounceObservation o;
+        o.name = "bed";
+        o.impact_velocity = Vec2(0.0, -speed);
+        o.size = size, o.density = density;
+        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
+        bounces.push_back(o);
+    }
+    const Calibration c = calibrate(fall, size, density, bounces, fluid);
+    EXPECT_NEAR(c.constants.drag_coefficient, 1.8, 1e-9);
+    EXPECT_NEAR(c.constants.added_mass_coefficient, 0.9, 1e-4);
+    EXPECT_NEAR(c.constants.wet_rebound.kappa_n, 0.7, 1e-4);
+    EXPECT_EQ(c.constants.wet_rebound.kappa_t, 1.0);  // no slope fitted to
+    for (const CalibrationPoint& p : c.points) {
+        EXPECT_NEAR(p.kappa, 0.7, 1e-4);
+        EXPECT_NEAR(p.lumped_height, p.cfd.rebound_height, 1e-4 * p.cfd.rebound_height);
+    }
+}
+
+// The shipped calibration (data/calibration/study_block.yaml) reads, and a hazard case takes its constants.
+TEST(HazardCalibration, ShippedCalibrationIsUsedByTheExample) {
+    const CalibrationFile f =
+        read_calibration_file(std::filesystem::path(CHUTE_SOURCE_DIR) / "data/calibration/study_block.yaml");
+    const HazardCase c = load_hazard_case(kExample / "case.yaml");
+    EXPECT_EQ(c.settings.drag_coefficient, f.drag_coefficient);
+    EXPECT_EQ(c.settings.added_mass_coefficient, f.added_mass_coefficient);
+    EXPECT_EQ(c.settings.wet_rebound.kappa_n, f.wet_rebound.kappa_n);
+    EXPECT_EQ(f.block_size, 0.3);
+    const HazardCase own = load_hazard_case(kExample / "case.yaml", {"model.drag_coefficient=2.0"});
+    EXPECT_EQ(own.settings.drag_coefficient, 2.0);  // a key given in the case wins over the calibration
+}
+
+}  // namespace
+}  // namespace chute
+
+namespace chute {
+namespace {
+
+// docs/hazard-case-file.md's key table is the schema's (regenerate: chute keys --hazard).
+TEST(HazardRun, DocTableIsCurrent) {
+    const auto path = std::filesystem::path(CHUTE_SOURCE_DIR) / "docs/hazard-case-file.md";
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string doc = text.str();
+    const std::string begin = "<!-- BEGIN GENERATED HAZARD KEY TABLE -->\n",
+                      end = "<!-- END GENERATED HAZARD KEY TABLE -->";
+    const std::size_t b = doc.find(begin), e = doc.find(end);
+    ASSERT_NE(b, std::string::npos);
+    ASSERT_NE(e, std::string::npos);
+    EXPECT_EQ(doc.substr(b + begin.size(), e - b - begin.size()), hazard_keys_markdown())
+        << "regenerate the table with: build/apps/chute keys --hazard";
 }
 
 }  // namespace

@@ -1,0 +1,216 @@
+#include "calibration.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <random>
+
+namespace chute {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The root of an increasing f - target in [lo, hi] by bisection (to 1e-6); the nearer end if there is none.
+double solve_increasing(const std::function<double(double)>& f, double target, double lo, double hi) {
+    if (f(lo) >= target) return lo;
+    if (f(hi) <= target) return hi;
+    while (hi - lo > 1e-6) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) < target ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// The minimum of f in [lo, hi] by golden-section search (f unimodal there), to 1e-5.
+double golden_minimum(const std::function<double(double)>& f, double lo, double hi) {
+    const double r = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = lo, b = hi, c = b - r * (b - a), d = a + r * (b - a);
+    double fc = f(c), fd = f(d);
+    while (b - a > 1e-5) {
+        if (fc < fd)
+            b = d, d = c, fd = fc, c = b - r * (b - a), fc = f(c);
+        else
+            a = c, c = d, fc = fd, d = a + r * (b - a), fd = f(d);
+    }
+    return 0.5 * (a + b);
+}
+
+LumpedModelConfig model_of(double size, double density, const BlockFluid& f, double cd, double ca) {
+    LumpedModelConfig m;
+    m.volume = size * size * size;
+    m.mass = density * m.volume;
+    m.frontal_area = size * size;
+    m.fluid_density = f.fluid_density;
+    m.drag_coefficient = cd;
+    m.added_mass_coefficient = ca;
+    m.gravity = Vec2(0.0, -f.gravity);
+    return m;
+}
+
+}  // namespace
+
+double drag_coefficient_from_terminal_speed(double terminal_speed, double size, double density, const BlockFluid& f) {
+    return 2.0 * (density - f.fluid_density) * f.gravity * size / (f.fluid_density * terminal_speed * terminal_speed);
+}
+
+LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                           double added_mass_coefficient, const WetRebound& law) {
+    const double c = std::cos(o.slope_angle), s = std::sin(o.slope_angle);
+    const Vec2 tangent(c, -s), normal(s, c);  // the plane descends towards +x at the slope's angle
+    const SlopeProfile plane({-100.0 * tangent, 400.0 * tangent}, {0}, 1e30);
+    Material ground;
+    ground.normal_restitution = Distribution::fixed(o.normal_restitution);
+    ground.tangential_restitution = Distribution::fixed(o.tangential_restitution);
+    const std::vector<Material> materials{ground};
+    TrajectorySettings settings;
+    settings.gravity = f.gravity;
+    settings.drag_coefficient = drag_coefficient;
+    settings.added_mass_coefficient = added_mass_coefficient;
+    settings.wet_rebound = law;
+    settings.end_time = 30.0;
+    settings.relative_tolerance = 1e-10, settings.absolute_tolerance = 1e-12;
+    TrajectoryIntegrator integrator(plane, materials, {f.fluid_density, f.viscosity}, settings);
+    // The law's rebound at the CFD's impact, then the flight to the next impact.
+    const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
+    const Restitution e =
+        wet_restitution(law, o.normal_restitution, o.tangential_restitution,
+                        impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity));
+    const Vec2 after = e.tangential * vt * tangent - e.normal * vn * normal;
+    HazardBlock block;
+    block.size = o.size;
+    block.density = o.density;
+    std::mt19937_64 rng(0);  // nothing is drawn: fixed coefficients, no roughness
+    const TrajectoryResult r = integrator.run(block, Vec2::Zero(), after, {}, rng);
+    LumpedBounce b;
+    b.height = r.apexes.empty() ? 0.0 : r.apexes.front().height;
+    b.runout = r.impacts.empty() ? nan : r.impacts.front().position.dot(tangent);
+    return b;
+}
+
+Calibration calibrate(const FreeFallObservation& fall, double size, double density,
+                      const std::vector<BounceObservation>& bounces, const BlockFluid& f, double beta) {
+    Calibration out;
+    CalibrationFile& k = out.constants;
+    k.block_size = size;
+    k.block_density = density;
+    k.wet_rebound.beta = beta;
+    out.terminal_speed = fall.terminal_speed;
+    k.drag_coefficient = drag_coefficient_from_terminal_speed(fall.terminal_speed, size, density, f);
+
+    // C_a: the closed form's speed against the CFD's up to 0.8 v_t.
+    std::size_t n = 0;
+    while (n < fall.t.size() && fall.speed[n] < 0.8 * fall.terminal_speed) ++n;
+    out.early_window = n ? fall.t[n - 1] : 0.0;
+    const auto misfit = [&](double ca) {
+        const BerangerFreeFall model = beranger_free_fall(model_of(size, density, f, k.drag_coefficient, ca));
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) sum += std::pow(model.speed(fall.t[i]) - fall.speed[i], 2);
+        return sum;
+    };
+    k.added_mass_coefficient = golden_minimum(misfit, 0.0, 3.0);
+    out.early_rms = n ? std::sqrt(misfit(k.added_mass_coefficient) / static_cast<double>(n)) : nan;
+
+    // kappa_n on the beds, then kappa_t on the slopes with it: each the least-squares fit of the relative misfit
+    // (bounce height on the beds, runout on the slopes) over the runs fitted to, within [0.05, 1 / R] (a wet
+    // coefficient above 1 would create energy). Each run's own value (the one that matches it alone, by
+    // bisection) is reported beside, to show how far the runs agree.
+    const auto measure = [&](const BounceObservation& o, bool normal, const WetRebound& law) {
+        const LumpedBounce b = lumped_bounce(o, f, k.drag_coefficient, k.added_mass_coefficient, law);
+        return normal ? b.height : b.runout;
+    };
+    const auto with = [](WetRebound law, bool normal, double kappa) {
+        (normal ? law.kappa_n : law.kappa_t) = kappa;
+        return law;
+    };
+    const auto is_bed = [](const BounceObservation& o) { return std::abs(o.slope_angle) < 1e-9; };
+    for (const BounceObservation& o : bounces) {
+        CalibrationPoint p;
+        p.cfd = o;
+        p.stokes = impact_stokes_number(o.density, std::abs(o.impact_velocity.y()), o.size, f.viscosity);
+        p.kappa = nan;
+        out.points.push_back(p);
+    }
+    for (const bool normal : {true, false}) {
+        std::vector<CalibrationPoint*> used;
+        double limit = 2.0;
+        for (CalibrationPoint& p : out.points) {
+            if (!p.cfd.fitted || is_bed(p.cfd) != normal || (!normal && !std::isfinite(p.cfd.runout))) continue;
+            used.push_back(&p);
+            limit = std::min(limit, 1.0 / (normal ? p.cfd.normal_restitution : p.cfd.tangential_restitution));
+        }
+        if (used.empty()) continue;  // kappa stays 1 (the literature's law)
+        for (CalibrationPoint* p : used) {
+            const double target = normal ? p->cfd.rebound_height : p->cfd.runout;
+            p->kappa = solve_increasing([&](double kappa) { return measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)); },
+                                        target, 0.05, limit);
+        }
+        const double best = golden_minimum(
+            [&](double kappa) {
+                double sum = 0.0;
+                for (const CalibrationPoint* p : used) {
+                    const double target = normal ? p->cfd.rebound_height : p->cfd.runout;
+                    sum += std::pow((measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)) - target) / target, 2);
+                }
+                return sum;
+            },
+            0.05, limit);
+        k.wet_rebound = with(k.wet_rebound, normal, best);
+    }
+    for (CalibrationPoint& p : out.points) {
+        const LumpedBounce b = lumped_bounce(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound);
+        p.lumped_height = b.height;
+        p.lumped_runout = b.runout;
+    }
+    return out;
+}
+
+namespace {
+
+std::string format(const char* f, auto... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, f, args...);
+    return buffer;
+}
+
+double percent(double model, double cfd) { return 100.0 * (model - cfd) / cfd; }
+
+}  // namespace
+
+std::string calibration_points_csv(const Calibration& c) {
+    std::string t =
+        "run,use,slope_deg,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa\n";
+    for (const CalibrationPoint& p : c.points)
+        t += format("%s,%s,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g\n", p.cfd.name.c_str(),
+                    p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+                    p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
+                    p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa);
+    return t;
+}
+
+std::string calibration_markdown(const Calibration& c) {
+    const CalibrationFile& k = c.constants;
+    std::string t = format(
+        "Block %.3g m, %.4g kg/m^3. Free fall: terminal speed %.4f m/s -> C_D = %.4f; early speed up to %.3f s -> "
+        "C_a = %.4f (rms misfit %.3g m/s). Bounces: kappa_n = %.4f, kappa_t = %.4f, beta = %.3g.\n\n",
+        k.block_size, k.block_density, c.terminal_speed, k.drag_coefficient, c.early_window, k.added_mass_coefficient,
+        c.early_rms, k.wet_rebound.kappa_n, k.wet_rebound.kappa_t, k.wet_rebound.beta);
+    t += "| run | use | slope | impact (along, normal) m/s | St | height CFD | height lumped | diff | runout CFD | "
+         "runout lumped | diff | own kappa |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const CalibrationPoint& p : c.points) {
+        const bool bed = std::abs(p.cfd.slope_angle) < 1e-9;  // straight up and down: no runout
+        const std::string runout =
+            bed ? "- | - | -"
+                : format("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout, percent(p.lumped_runout, p.cfd.runout));
+        t += format("| %s | %s | %.0f deg | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s |\n",
+                    p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+                    p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
+                    p.lumped_height, percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
+                    std::isfinite(p.kappa) ? format("%.4f", p.kappa).c_str() : "-");
+    }
+    return t;
+}
+
+}  // namespace chute

@@ -1,0 +1,79 @@
+#pragma once
+// Calibration of the wet lumped model (trajectory.hpp) by Chute's CFD runs of one block (`chute calibrate`):
+//
+//   C_D  from the free fall's terminal speed v_t: the model's v_t^2 = 2 (rho_s - rho_f) g a / (rho_f C_D);
+//   C_a  from its early acceleration: the least-squares fit of the model's closed form
+//        v(t) = v_t tanh(g' t / v_t), g' = (rho_s - rho_f) g / (rho_s + C_a rho_f), to the CFD's speed up to
+//        0.8 v_t (a window, not the first step: the run's first step is the CFL limit of water at rest);
+//   kappa_n  from bounces on a bed: the lumped block leaves the bed at the CFD's impact with the wet law's
+//        velocity and flies under the model; kappa_n makes its bounce height the CFD's (one value per run,
+//        then their mean, weighted alike);
+//   kappa_t  from bounces on slopes: with that kappa_n, kappa_t makes the runout to the next impact the CFD's.
+// Runs marked `check` are not fitted to: the calibrated model's bounce height and runout are compared with
+// theirs (the acceptance: within 15 %).
+//
+// The CFD runs measure bounces as the study ran them: a horizontal bed with gravity tilted by the slope's angle
+// (the physics of a slope), impacts at the contact distance; the lumped block meets a plane along the same
+// gravity at the same velocity, so both measure height and runout from their impact point.
+#include <string>
+#include <vector>
+
+#include "calibration_file.hpp"
+#include "trajectory.hpp"
+
+namespace chute {
+
+struct FreeFallObservation {
+    std::vector<double> t, speed;  // the CFD block's speed along gravity
+    double terminal_speed = 0.0;   // mean over the last `terminal_window` s
+    double terminal_window = 0.5;
+};
+
+// One CFD bounce, in the bed's frame (x along it, y out of it; gravity tilted by the slope's angle).
+struct BounceObservation {
+    std::string name;
+    bool fitted = true;             // false: a check
+    double slope_angle = 0.0;       // rad: gravity's angle from the bed's normal (0: a horizontal bed)
+    Vec2 impact_velocity;           // at the first impact
+    double rebound_height = 0.0;    // the centre's largest rise out of the bed between the first two impacts
+    double runout = 0.0;            // along the bed from the first impact to the second (NaN: no second one)
+    double size = 0.0, density = 0.0;
+    double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
+};
+
+struct BlockFluid {
+    double fluid_density = 1000.0, viscosity = 1.0e-3, gravity = 9.81;
+};
+
+struct CalibrationPoint {
+    BounceObservation cfd;
+    double stokes = 0.0;                  // of the first impact
+    double kappa = 0.0;                   // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
+    double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
+};
+
+struct Calibration {
+    CalibrationFile constants;
+    double terminal_speed = 0.0, early_window = 0.0;  // s: the C_a fit's window [0, early_window]
+    double early_rms = 0.0;                           // m/s: the C_a fit's residual
+    std::vector<CalibrationPoint> points;
+};
+
+double drag_coefficient_from_terminal_speed(double terminal_speed, double size, double density, const BlockFluid& f);
+
+// The lumped block's bounce: from the impact at `o.impact_velocity` on a plane along tilted gravity, its top
+// above the plane and the runout to its next impact.
+struct LumpedBounce {
+    double height = 0.0, runout = 0.0;
+};
+LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                           double added_mass_coefficient, const WetRebound& law);
+
+Calibration calibrate(const FreeFallObservation& fall, double size, double density,
+                      const std::vector<BounceObservation>& bounces, const BlockFluid& f, double beta = 35.0);
+
+// The points as a CSV table (calibration_points.csv) and as Markdown.
+std::string calibration_points_csv(const Calibration& c);
+std::string calibration_markdown(const Calibration& c);
+
+}  // namespace chute
