@@ -75,9 +75,8 @@ LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, doub
     TrajectoryIntegrator integrator(plane, materials, {f.fluid_density, f.viscosity}, settings);
     // The law's rebound at the CFD's impact, then the flight to the next impact.
     const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
-    const Restitution e =
-        wet_restitution(law, o.normal_restitution, o.tangential_restitution,
-                        impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity));
+    const Restitution e = wet_restitution(law, o.normal_restitution, o.tangential_restitution,
+                                          impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity));
     const Vec2 after = e.tangential * vt * tangent - e.normal * vn * normal;
     HazardBlock block;
     block.size = o.size;
@@ -144,8 +143,9 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         if (used.empty()) continue;  // kappa stays 1 (the literature's law)
         for (CalibrationPoint* p : used) {
             const double target = normal ? p->cfd.rebound_height : p->cfd.runout;
-            p->kappa = solve_increasing([&](double kappa) { return measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)); },
-                                        target, 0.05, limit);
+            p->kappa = solve_increasing(
+                [&](double kappa) { return measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)); }, target, 0.05,
+                limit);
         }
         const double best = golden_minimum(
             [&](double kappa) {
@@ -201,9 +201,9 @@ std::string calibration_markdown(const Calibration& c) {
          "runout lumped | diff | own kappa |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
         const bool bed = std::abs(p.cfd.slope_angle) < 1e-9;  // straight up and down: no runout
-        const std::string runout =
-            bed ? "- | - | -"
-                : format("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout, percent(p.lumped_runout, p.cfd.runout));
+        const std::string runout = bed ? "- | - | -"
+                                       : format("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
+                                                percent(p.lumped_runout, p.cfd.runout));
         t += format("| %s | %s | %.0f deg | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s |\n",
                     p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
                     p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,

@@ -32,11 +32,11 @@ struct FreeFallObservation {
 // One CFD bounce, in the bed's frame (x along it, y out of it; gravity tilted by the slope's angle).
 struct BounceObservation {
     std::string name;
-    bool fitted = true;             // false: a check
-    double slope_angle = 0.0;       // rad: gravity's angle from the bed's normal (0: a horizontal bed)
-    Vec2 impact_velocity;           // at the first impact
-    double rebound_height = 0.0;    // the centre's largest rise out of the bed between the first two impacts
-    double runout = 0.0;            // along the bed from the first impact to the second (NaN: no second one)
+    bool fitted = true;           // false: a check
+    double slope_angle = 0.0;     // rad: gravity's angle from the bed's normal (0: a horizontal bed)
+    Vec2 impact_velocity;         // at the first impact
+    double rebound_height = 0.0;  // the centre's largest rise out of the bed between the first two impacts
+    double runout = 0.0;          // along the bed from the first impact to the second (NaN: no second one)
     double size = 0.0, density = 0.0;
     double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
 };
@@ -47,8 +47,8 @@ struct BlockFluid {
 
 struct CalibrationPoint {
     BounceObservation cfd;
-    double stokes = 0.0;                  // of the first impact
-    double kappa = 0.0;                   // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
+    double stokes = 0.0;  // of the first impact
+    double kappa = 0.0;   // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
     double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
 };
 

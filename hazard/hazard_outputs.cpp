@@ -45,11 +45,12 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
     t += format("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,
                 s.stop_p95, s.stop_p99, s.stop_max);
     for (const CollectorSummary& k : s.collectors)
-        t += format(
-            "  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g); hit energy "
-            "mean %.4g J, p50 %.4g, p95 %.4g, max %.4g\n",
-            k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits, k.hit_probability,
-            k.energy_mean, k.energy_p50, k.energy_p95, k.energy_max);
+        t += format("  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g)%s\n",
+                    k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits, k.hit_probability,
+                    k.hits ? format("; hit energy mean %.4g J, p50 %.4g, p95 %.4g, max %.4g", k.energy_mean,
+                                    k.energy_p50, k.energy_p95, k.energy_max)
+                                 .c_str()
+                           : "");
     return t;
 }
 
@@ -70,11 +71,11 @@ void write_hazard_outputs(const HazardCase& c, const HazardResults& r, const Haz
     }
     write_text_atomically(out / "trajectories.csv", t);
 
-    t = "x,ground_z,reach_probability,passing,speed_mean,speed_p95,kinetic_mean,kinetic_p95,rotational_mean,"
+    t = "x,ground_z,reach_probability,passing_fraction,speed_mean,speed_p95,kinetic_mean,kinetic_p95,rotational_mean,"
         "rotational_p95,height_mean,height_p95\n";
     for (const StationSummary& st : s.stations)
         t += format("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", st.x, st.ground, st.reach,
-                    st.passing, st.speed.mean, st.speed.p95, st.kinetic_energy.mean, st.kinetic_energy.p95,
+                    st.passing_fraction, st.speed.mean, st.speed.p95, st.kinetic_energy.mean, st.kinetic_energy.p95,
                     st.rotational_energy.mean, st.rotational_energy.p95, st.height.mean, st.height.p95);
     write_text_atomically(out / "stations.csv", t);
 

@@ -58,7 +58,7 @@ HazardSummary summarize(const HazardCase& c, const HazardResults& r) {
         st.reach = N ? static_cast<double>(beyond) / static_cast<double>(N) : 0.0;
         long passing = 0;
         for (long i = 0; i < N; ++i) passing += std::isfinite(r.speed[i * S + j]) ? 1 : 0;
-        st.passing = N ? static_cast<double>(passing) / static_cast<double>(N) : 0.0;
+        st.passing_fraction = N ? static_cast<double>(passing) / static_cast<double>(N) : 0.0;
         st.speed = envelope(r.speed, N, S, j);
         st.kinetic_energy = envelope(r.kinetic_energy, N, S, j);
         st.rotational_energy = envelope(r.rotational_energy, N, S, j);
@@ -77,6 +77,7 @@ HazardSummary summarize(const HazardCase& c, const HazardResults& r) {
         }
         cs.hits = static_cast<long>(hits.size());
         cs.hit_probability = N ? static_cast<double>(cs.hits) / static_cast<double>(N) : 0.0;
+        cs.energy_mean = cs.energy_p50 = cs.energy_p95 = cs.energy_max = std::numeric_limits<double>::quiet_NaN();
         if (!hits.empty()) {
             double sum = 0.0;
             for (double e : hits) sum += e;

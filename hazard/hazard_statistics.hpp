@@ -20,8 +20,8 @@ struct Envelope {
 
 struct StationSummary {
     double x = 0.0, ground = 0.0;
-    double reach = 0.0;    // fraction of all blocks that stop beyond x (or leave the profile's end)
-    double passing = 0.0;  // fraction of all blocks that cross x
+    double reach = 0.0;             // fraction of all blocks that stop beyond x (or leave the profile's end)
+    double passing_fraction = 0.0;  // of all blocks, those that cross x
     Envelope speed, kinetic_energy, rotational_energy, height;
 };
 
@@ -29,7 +29,7 @@ struct CollectorSummary {
     Collector collector;
     long passing = 0, hits = 0;
     double hit_probability = 0.0;                                                    // hits / all blocks
-    double energy_mean = 0.0, energy_p50 = 0.0, energy_p95 = 0.0, energy_max = 0.0;  // J, of the hits
+    double energy_mean = 0.0, energy_p50 = 0.0, energy_p95 = 0.0, energy_max = 0.0;  // J, of the hits (NaN: none)
 };
 
 struct HazardSummary {

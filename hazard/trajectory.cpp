@@ -214,7 +214,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
                 const double u = motion.speed(at);
                 cross(j,
                       seg.start + (s + d * std::abs(stations[j] - here.x()) / std::abs(seg.tangent.x())) * seg.tangent,
-                      u, u / radius, 0.0);
+                      u, 0.0, 0.0);  // sliding, not rolling: no spin
             });
             const double u_end = go == to_stop && !timed_out ? 0.0 : motion.speed(tau);
             out.max_speed = std::max({out.max_speed, std::abs(v), u_end});
@@ -246,7 +246,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             }
             const SlopeSegment& ns = segments[next];
             if (velocity.dot(ns.normal) > 0.0) {  // convex: the ground falls away, the block takes off
-                fly(there, velocity, std::abs(v) / radius);
+                fly(there, velocity, 0.0);        // off a slide: no spin
                 return true;
             }
             k = next;  // concave: it keeps its velocity along the new segment

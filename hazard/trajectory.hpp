@@ -13,8 +13,9 @@
 // buoyant weight, drag and added mass in water, along the segment; at a convex vertex it takes off, at a
 // concave one it keeps the velocity along the new segment; where the speed drops to zero and the friction holds
 // the weight, it stops. Rotation is tracked as a lumped model can (RocFall's lumped mass): the spin of a block
-// rolling off at each impact, omega = v_t' / (a / 2), kept in flight and rolling while sliding; it reports
-// rotational energy and does not act back on the translation.
+// rolling off at each impact, omega = v_t' / (a / 2), kept in flight (in water too: no rotational drag is
+// modelled), none while sliding (the slide is Coulomb friction, not rolling); it reports rotational energy and
+// does not act back on the translation.
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_nonlinearsolver.h>
 #include <sundials/sundials_nvector.h>

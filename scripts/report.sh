@@ -2,7 +2,8 @@
 # The study reproduced as one page: runs every scenario of Turmel & Locat (2008) with its examples/<scenario>/run
 # script (reusing finished runs; --redo runs them again) and writes OUT/index.html with the figures of the study's
 # Figs. 4 to 10, each claim of the study with Chute's numbers in both modes and a verdict, and what the study could
-# not do (python/study/report.py); and the same as OUT/report.pdf when Chromium is installed.
+# not do (python/study/report.py); beyond the study, the rockfall hazard of the study's block in a fjord, water and
+# dry (examples/fjord_wall/run into OUT/fjord_wall); and the same as OUT/report.pdf when Chromium is installed.
 #   scripts/report.sh [--quick] [--redo] [--out DIR] [--no-build]
 # It installs what is missing and builds first (scripts/install-deps.sh, scripts/build.sh), so that it works from a
 # fresh clone; --no-build skips that (the test that runs it, inside a build).
@@ -25,7 +26,7 @@ while [ $# -gt 0 ]; do
     --redo) args+=("$1") ;;
     --out) out=$2; shift ;;
     --no-build) build=0 ;;
-    *) sed -n '2,10p' "$0"; exit 2 ;;
+    *) sed -n '2,11p' "$0"; exit 2 ;;
   esac
   shift
 done
@@ -55,6 +56,16 @@ for s in "${scenarios[@]}"; do
   left=$(( left > share ? left - share : 0 ))
 done
 printf '%s' "$timing" > "$out/timing.txt"
+# Beyond the study: the rockfall hazard of the study's block in a fjord, water and dry (a few seconds of lumped
+# trajectories, not CFD: run again every time), for the page's last section.
+fjord=(--out "$out/fjord_wall")
+[ $quick -eq 1 ] && fjord+=(--trajectories 2000)
+printf 'report: %-24s (%d s so far)\n' fjord_wall "$(( SECONDS - start ))"
+examples/fjord_wall/run "${fjord[@]}" > "$out/fjord_wall.log" 2>&1 || {
+  echo "report: fjord_wall failed; its log: $out/fjord_wall.log" >&2
+  tail -5 "$out/fjord_wall.log" >&2
+  exit 3
+}
 /usr/bin/python3 python/study/report.py "$out"
 # The same page as PDF, if Chromium is there (scripts/install-deps.sh installs it for the page's test).
 page=$(cd "$out" && pwd)/index.html

@@ -95,6 +95,63 @@ def table_html(t):
     return "\n".join(out)
 
 
+FJORD_HEADING = "Beyond the study: rockfall hazard in a fjord"
+# The fjord section's figures (examples/fjord_wall/run's folders under OUT/fjord_wall) and their captions.
+FJORD_FIGURES = [
+    ("water/profile.png", "With the water: the profile (the fjord shaded), sample paths (flights blue, slides "
+     "orange), where the blocks stopped and the probability that a block stops beyond x."),
+    ("dry/profile.png", "The same slope dry (the water level below the profile)."),
+    ("compare_reach.png", "Reach probability against x, water and dry, on a linear and a logarithmic scale, with "
+     "the profile beneath."),
+    ("compare_envelopes.png", "Speed and translational kinetic energy along the slope, 95th percentile and mean "
+     "among the blocks crossing each station, water and dry."),
+    ("water/collectors.png", "With the water: the energies of the blocks that hit each collector."),
+]
+
+
+def fjord_section(out, quick):
+    """The rockfall hazard of the study's block in a fjord (examples/fjord_wall/run into OUT/fjord_wall), water and
+    dry: what it is, the comparison's table (compare.json) and its figures; nothing if it was not run."""
+    path = os.path.join(out, "fjord_wall", "compare.json")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        d = json.load(f)
+    model = ""
+    summary = os.path.join(out, "fjord_wall", "water", "summary.txt")
+    if os.path.exists(summary):
+        model = next((line.strip() for line in open(summary) if line.strip().startswith("water level")), "")
+    runs = {r["label"]: r for r in d["runs"]}
+    n = sorted({r["trajectories"] for r in d["runs"]})
+    section = [f"<h2 id='fjord_wall'>{esc(FJORD_HEADING)}</h2>",
+               "<p>The study's block (0.3 m, 2500 kg/m<sup>3</sup>) falling off a 40 m rock cliff into a fjord, down "
+               "a talus under the water to 40 m depth and onto a muddy seabed (examples/fjord_wall). Not CFD: "
+               f"{' and '.join(str(x) for x in n)} Monte Carlo trajectories per run of the lumped block "
+               "(<code>chute hazard</code>: release point and speed, restitution, friction and the ground's "
+               "roughness drawn for each block and impact), whose wet model (drag, added mass, buoyancy and the "
+               "wet restitution) is calibrated by Chute's CFD runs of the study's block "
+               "(data/calibration/study_block.yaml). <b>water</b> is the case as written; <b>dry</b> is the same "
+               "slope with the water level below it. A collector is hit by a block that passes it at or below its "
+               "height.</p>"]
+    if model:
+        section.append(f"<p class='note'>The water run's settings (its summary.txt): {esc(model)}.</p>")
+    section.append(table_html({"title": "Water against dry: how the blocks ended, where they stopped, what they "
+                                        "brought to the collectors", "header": d["table"]["header"],
+                               "rows": d["table"]["rows"],
+                               "note": "Stopping x: percentiles over all blocks (a block past the profile's end "
+                                       "counted at its last x). Hit energy: translational and rotational, over the "
+                                       "hits; – where none."}))
+    for fig, caption in FJORD_FIGURES:
+        section.append(f"<figure><img src='fjord_wall/{esc(fig)}' alt='{esc(caption)}'>"
+                       f"<figcaption>{esc(caption)}</figcaption></figure>")
+    seconds = ", ".join(f"{esc(label)} {r['seconds']:.1f} s" for label, r in runs.items())
+    section.append(f"<p class='note'>Wall time of the trajectories: {seconds}. Run it alone: "
+                   "<code>examples/fjord_wall/run" + (" --trajectories 2000" if quick else "") +
+                   "</code>; the table as Markdown: "
+                   "<a href='fjord_wall/compare.md'>fjord_wall/compare.md</a>.</p>")
+    return section
+
+
 def machine():
     cpu = ""
     try:
@@ -162,6 +219,7 @@ def main(out):
         tables = [t for d in results for t in d["tables"] if t.get("topic") == topic]
         page.append(f"<h3>{esc(heading)}</h3><p class='note'>{esc(intro)}</p>")
         page += [table_html(t) for t in tables] or ["<p class='note'>Not run (--quick).</p>"]
+    page += fjord_section(out, quick)
     page.append("<h2>Time taken</h2><p class='note'>The runs' own wall times (what each scenario costs from "
                 "scratch; a run shared by two scenarios is counted in each) and the time this call of "
                 "scripts/report.sh spent (finished runs are reused).</p><table><tr><th>scenario</th>"

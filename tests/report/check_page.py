@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Checks the study's report page as a person would see it: renders OUT/index.html in headless Chromium (Debian's
 chromium), lets the page's own script count the figures that loaded and the claim cells left empty, and checks
-that every figure of the study (Figs. 4 to 10) is there and loaded and that every claim row carries the study's
-number, Chute's number in the immersed mode and a verdict in both modes. Saves what Chromium drew as
-OUT/page.png.
+that every figure of the study (Figs. 4 to 10) is there and loaded, that every claim row carries the study's
+number, Chute's number in the immersed mode and a verdict in both modes, and that the section beyond the study on the
+rockfall hazard in a fjord is there with its figures. Saves what Chromium drew as OUT/page.png.
 Usage: /usr/bin/python3 tests/report/check_page.py OUT"""
 import os
 import re
@@ -16,14 +16,20 @@ from html.parser import HTMLParser
 STUDY_FIGURES = ["fig4_free_fall.png", "fig4_density.png", "fig4_size.png", "fig5_current.png", "fig6_bed.png",
                  "fig7_bed.png", "fig8_air_beranger.png", "fig9_slope_45.png", "fig10_slope_30.png"]
 VERDICTS = {"agrees", "disagrees", "n/a"}
+# Beyond the study: the rockfall hazard in a fjord (examples/fjord_wall/run, python/study/report.py), its heading and
+# its figures.
+FJORD_HEADING = "Beyond the study: rockfall hazard in a fjord"
+FJORD_FIGURES = ["fjord_wall/water/profile.png", "fjord_wall/dry/profile.png", "fjord_wall/compare_reach.png",
+                 "fjord_wall/compare_envelopes.png", "fjord_wall/water/collectors.png"]
 
 
 class ClaimRows(HTMLParser):
-    """The cells of every <tr class="claim"> and the src of every <img>."""
+    """The cells of every <tr class="claim">, the src of every <img> and the text of every <h2>."""
 
     def __init__(self):
         super().__init__()
         self.rows, self.images, self.cell, self.row = [], [], None, None
+        self.headings, self.heading = [], None
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -33,6 +39,8 @@ class ClaimRows(HTMLParser):
             self.cell = ""
         elif tag == "img":
             self.images.append(a.get("src", ""))
+        elif tag == "h2":
+            self.heading = ""
 
     def handle_endtag(self, tag):
         if tag == "td" and self.cell is not None:
@@ -41,10 +49,15 @@ class ClaimRows(HTMLParser):
         elif tag == "tr" and self.row is not None:
             self.rows.append(self.row)
             self.row = None
+        elif tag == "h2" and self.heading is not None:
+            self.headings.append(self.heading.strip())
+            self.heading = None
 
     def handle_data(self, data):
         if self.cell is not None:
             self.cell += data
+        if self.heading is not None:
+            self.heading += data
 
 
 def chromium():
@@ -76,6 +89,11 @@ def main(out):
     for name in STUDY_FIGURES:
         if not any(src.endswith("/" + name) for src in parsed.images):
             failures.append(f"the study's figure {name} is not on the page")
+    if FJORD_HEADING not in parsed.headings:
+        failures.append(f"no section '{FJORD_HEADING}'")
+    for name in FJORD_FIGURES:
+        if name not in parsed.images:
+            failures.append(f"the fjord's figure {name} is not on the page")
     if len(parsed.rows) < 10:
         failures.append(f"only {len(parsed.rows)} claim rows")
     for row in parsed.rows:

@@ -3,6 +3,7 @@
 // form, and its profile, distributions and random streams.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -236,7 +237,8 @@ TEST(Hazard, ProfileRefusesFoldsAndRepeats) {
 }
 
 TEST(Hazard, ProfileCsvNamesTheBadRow) {
-    const auto dir = std::filesystem::temp_directory_path() / "chute_hazard_csv";
+    // One folder per process: under unit_np2 both ranks run this test.
+    const auto dir = std::filesystem::temp_directory_path() / ("chute_hazard_csv_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     {
         std::ofstream(dir / "good.csv") << "x,z,material\n0,10,rock\n5,2,rock\n# the seabed\n9,1.5,mud\n";
