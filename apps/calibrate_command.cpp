@@ -86,7 +86,8 @@ Series read_body_series(const std::filesystem::path& file) {
     io::CSVReader<5> in(file.string());
     in.read_header(io::ignore_extra_column, "t", "x", "y", "u", "v");
     double t, x, y, u, v;
-    while (in.read_row(t, x, y, u, v)) s.t.push_back(t), s.x.push_back(x), s.y.push_back(y), s.u.push_back(u), s.v.push_back(v);
+    while (in.read_row(t, x, y, u, v))
+        s.t.push_back(t), s.x.push_back(x), s.y.push_back(y), s.u.push_back(u), s.v.push_back(v);
     return s;
 }
 
@@ -111,7 +112,8 @@ std::string calibration_spec_keys_markdown() { return chute::markdown_table(spec
 int calibrate_command(const std::filesystem::path& spec_file, const std::filesystem::path& out_dir, bool redo) {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (!std::filesystem::exists(spec_file)) throw chute::CaseError(spec_file.string() + ": calibration spec not found");
+    if (!std::filesystem::exists(spec_file))
+        throw chute::CaseError(spec_file.string() + ": calibration spec not found");
     chute::CaseReader r(spec_keys(), spec_placeholders(), spec_file.string());
     r.add_text(read_file(spec_file));
     r.check_presence();
@@ -171,7 +173,8 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
     {
         const Series s = read_body_series(out / "runs/free_fall/body_block.csv");
         const chute::Vec2 down = chute::Vec2(fall_case.gravity[0], fall_case.gravity[1]).normalized();
-        for (std::size_t k = 0; k < s.t.size(); ++k) fall.t.push_back(s.t[k]), fall.speed.push_back(down.dot(chute::Vec2(s.u[k], s.v[k])));
+        for (std::size_t k = 0; k < s.t.size(); ++k)
+            fall.t.push_back(s.t[k]), fall.speed.push_back(down.dot(chute::Vec2(s.u[k], s.v[k])));
         if (!read_contacts(out / "runs/free_fall/contacts.csv").empty())
             throw chute::CaseError("free_fall: the block meets an obstacle; the fall must end before it");
         double sum = 0.0;
@@ -202,7 +205,8 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
         o.runout = impacts.size() > 1 ? impacts[1].x - impacts[0].x : std::nan("");
         const Series s = read_body_series(dir / "body_block.csv");
         for (std::size_t k = 0; k < s.t.size(); ++k)
-            if (s.t[k] > impacts[0].t && s.t[k] < t_next) o.rebound_height = std::max(o.rebound_height, s.y[k] - impacts[0].y);
+            if (s.t[k] > impacts[0].t && s.t[k] < t_next)
+                o.rebound_height = std::max(o.rebound_height, s.y[k] - impacts[0].y);
         bounces.push_back(o);
     }
 

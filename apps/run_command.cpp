@@ -71,4 +71,3 @@ int run_command(const std::filesystem::path& case_file, const std::filesystem::p
     }
     return 0;
 }
-
