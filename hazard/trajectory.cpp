@@ -26,6 +26,8 @@ struct TrajectoryIntegrator::Flight {
 namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double kValleyRestSpeed = 1e-3;  // m/s
+constexpr long kMaxSlideEvents = 100000;
 
 int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     const auto& f = *static_cast<const TrajectoryIntegrator::Flight*>(data);
@@ -175,6 +177,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
         int material = -1;
         bool in_water = profile_.wet((segments[k].start + s * segments[k].tangent).y());
         if (!new_slide) material = segments[k].material;  // the friction drawn on this material goes on
+        long events = 0;
         for (;;) {
             const SlopeSegment& seg = segments[k];
             if (seg.material != material) {
@@ -252,6 +255,18 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             k = next;  // concave: it keeps its velocity along the new segment
             s = d > 0.0 ? 0.0 : ns.length;
             v = velocity.dot(ns.tangent);
+            // In a valley (a vertex both of whose segments rise away from it) a block steeper than its friction
+            // rocks from side to side, losing a factor cos(turn) at each crossing: infinitely many crossings in a
+            // finite time. Below 1 mm/s at the bottom it rests there.
+            if (std::abs(v) < kValleyRestSpeed && (d > 0.0 ? ns.tangent.y() > 0.0 : ns.tangent.y() < 0.0) &&
+                (d > 0.0 ? seg.tangent.y() < 0.0 : seg.tangent.y() > 0.0)) {
+                finish(TrajectoryEnd::rest, there, Vec2::Zero());
+                return false;
+            }
+            if (++events > kMaxSlideEvents) {  // a guard: a slide that has not settled after that many events
+                finish(TrajectoryEnd::rest, there, velocity);
+                return false;
+            }
         }
     };
 

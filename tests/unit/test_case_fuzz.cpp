@@ -25,6 +25,7 @@
 #include "../fuzz/case_mutator.hpp"
 #include "axis.hpp"
 #include "case_file.hpp"
+#include "example_cases.hpp"
 #include "print_on_rank0.hpp"
 
 namespace chute {
@@ -49,13 +50,12 @@ struct BaseCase {
 
 std::vector<BaseCase> example_cases() {
     std::vector<BaseCase> cases;
-    for (const auto& entry : fs::recursive_directory_iterator(fs::path(CHUTE_SOURCE_DIR) / "examples"))
-        if (entry.path().extension() == ".yaml") {
-            std::ifstream in(entry.path());
-            std::stringstream s;
-            s << in.rdbuf();
-            cases.push_back({fs::relative(entry.path(), CHUTE_SOURCE_DIR).string(), s.str()});
-        }
+    for (const fs::path& file : flow_example_cases()) {
+        std::ifstream in(file);
+        std::stringstream s;
+        s << in.rdbuf();
+        cases.push_back({fs::relative(file, CHUTE_SOURCE_DIR).string(), s.str()});
+    }
     std::sort(cases.begin(), cases.end(), [](const BaseCase& a, const BaseCase& b) { return a.file < b.file; });
     return cases;
 }

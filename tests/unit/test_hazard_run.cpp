@@ -262,3 +262,42 @@ TEST(HazardRun, DocTableIsCurrent) {
 
 }  // namespace
 }  // namespace chute
+
+namespace chute {
+namespace {
+
+// A profile of 500 segments (a wavy 42 degree slope, +-10 degrees, into the water): every block ends (at rest or
+// past the end), none passes under the ground, some stop under the water and some pass a barrier.
+TEST(HazardRun, HundredsOfSegments) {
+    if (world_rank() != 0) GTEST_SKIP() << "one rank is enough";
+    std::string points = "[";
+    for (int i = 0; i <= 500; ++i) {
+        const double x = 0.4 * i, z = 100.0 - 0.9 * x + 0.3 * std::sin(0.37 * i) + 0.05 * std::sin(1.9 * i);
+        points += (i ? ", [" : "[") + std::to_string(x) + ", " + std::to_string(z) + "]";
+    }
+    points += "]";
+    const HazardCase c = hazard_case_from_text(
+        "trajectories: 300\nwater: {level: 20.0}\nprofile: {points: " + points +
+            "}\nmaterials: {rock: {normal_restitution: {distribution: uniform, min: 0.2, max: 0.5}, "
+            "friction_angle: {distribution: normal, mean: 36, sd: 4, min: 25, max: 45}, roughness: 3}}\n"
+            "block: {size: {distribution: lognormal, mean: 0.5, sd: 0.2, min: 0.1, max: 2.0}, density: {value: 2700}}\n"
+            "release: {x: {distribution: uniform, min: 0.5, max: 10}, height: {value: 1.0}}\n"
+            "collectors: {barrier: {x: 60, height: 2.0}}\n",
+        kExample);
+    ASSERT_EQ(c.segment_materials.size(), 500u);
+    const HazardResults r = run_hazard(c, MPI_COMM_SELF);
+    int wet_stops = 0;
+    for (const TrajectoryOutcome& o : r.outcomes) {
+        EXPECT_TRUE(o.end == TrajectoryEnd::rest || o.end == TrajectoryEnd::past_end);
+        EXPECT_GE(o.stop.y() - c.profile().height_at(o.stop.x()), -1e-6);
+        wet_stops += o.stop.y() < 20.0 ? 1 : 0;
+    }
+    EXPECT_GT(wet_stops, 0);
+    const HazardSummary s = summarize(c, r);
+    EXPECT_EQ(s.trajectories, 300);
+    EXPECT_LE(s.collectors[0].hits, s.collectors[0].passing);
+    EXPECT_GT(s.collectors[0].passing, 0);
+}
+
+}  // namespace
+}  // namespace chute

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "case_file.hpp"
+#include "example_cases.hpp"
 #include "plausibility.hpp"
 
 using namespace chute;
@@ -35,10 +36,9 @@ void expect_warning(const std::vector<std::string>& overrides, const std::string
 
 TEST(Plausibility, EveryExampleIsPlausible) {
     int examples = 0;
-    for (const auto& file : fs::recursive_directory_iterator(fs::path(CHUTE_SOURCE_DIR) / "examples")) {
-        if (file.path().extension() != ".yaml") continue;
-        const auto w = plausibility_warnings(load_case(file.path(), {}));
-        EXPECT_TRUE(w.empty()) << file.path() << ": " << w.front();
+    for (const fs::path& file : flow_example_cases()) {
+        const auto w = plausibility_warnings(load_case(file, {}));
+        EXPECT_TRUE(w.empty()) << file << ": " << w.front();
         ++examples;
     }
     EXPECT_GE(examples, 15);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "../fuzz/case_mutator.hpp"
+#include "../unit/example_cases.hpp"
 #include "../unit/print_on_rank0.hpp"
 
 namespace chute {
@@ -111,10 +112,7 @@ std::string quoted(const std::string& s) {
 }
 
 TEST(CaseFuzzRuns, MutatedExamplesRunOrStopWithAMessage) {
-    std::vector<fs::path> examples;
-    for (const auto& e : fs::recursive_directory_iterator(fs::path(CHUTE_SOURCE_DIR) / "examples"))
-        if (e.path().extension() == ".yaml") examples.push_back(e.path());
-    std::sort(examples.begin(), examples.end());
+    const std::vector<fs::path> examples = flow_example_cases();
     ASSERT_GE(examples.size(), 15u);
     const fs::path dir = fs::temp_directory_path() / ("chute_case_fuzz_runs_" + std::to_string(::getpid()));
     fs::create_directories(dir);
