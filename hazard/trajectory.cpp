@@ -108,37 +108,38 @@ void TrajectoryIntegrator::start(const Flight& flight, double t, const Vec2& x, 
     check(CVodeSetRootDirection(cvode_, directions), "CVodeSetRootDirection");
 }
 
-TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2& start_position,
-                                           const Vec2& start_velocity, const std::vector<double>& stations,
-                                           std::mt19937_64& rng, bool record_path) {
-    TrajectoryResult out;
-    out.stations.assign(stations.size(), {});
-    const double radius = 0.5 * block.size, mass = block.mass(), inertia = block.moment_of_inertia();
-    const LumpedModelConfig wet = flight_model(block, true), dry = flight_model(block, false);
-    const auto& segments = profile_.segments();
+// One trajectory as it runs: its block, its random numbers, the clock, the flight CVODE integrates, and the result
+// as it builds up.
+struct TrajectoryIntegrator::Run {
+    const HazardBlock& block;
+    const std::vector<double>& stations;
+    std::mt19937_64& rng;
+    bool record_path;
+    LumpedModelConfig wet, dry;
+    double radius, mass, inertia;
     Flight flight;
-    flight.self = this;
     double t = 0.0;
-    out.max_speed = start_velocity.norm();
+    double friction = 0.0;  // tan of the friction angle, drawn when a slide starts or meets a new material
+    TrajectoryResult out;
 
-    const auto finish = [&](TrajectoryEnd end, const Vec2& x, const Vec2& v) {
+    void finish(TrajectoryEnd end, const Vec2& x, const Vec2& v) {
         out.end = end;
         out.t = t;
         out.position = x;
         out.velocity = v;
-        return out;
-    };
-    const auto cross = [&](std::size_t j, const Vec2& x, double speed, double spin, double height) {
+    }
+    // The block crosses station j: its largest speed, energies and height there are kept.
+    void cross(std::size_t j, double speed, double spin, double height) {
         StationCrossing& c = out.stations[j];
         c.crossings += 1;
         c.speed = std::max(c.speed, speed);
         c.kinetic_energy = std::max(c.kinetic_energy, 0.5 * mass * speed * speed);
         c.rotational_energy = std::max(c.rotational_energy, 0.5 * inertia * spin * spin);
         c.height = std::max(c.height, height);
-        (void)x;
-    };
-    // The stations strictly after x0 up to x1 (in either direction), by index.
-    const auto stations_between = [&](double x0, double x1, auto visit) {
+    }
+    // The stations strictly after x0 up to x1 (in either direction), in the order the block meets them.
+    template <class Visit>
+    void stations_between(double x0, double x1, Visit visit) const {
         if (x0 == x1) return;
         auto it = std::upper_bound(stations.begin(), stations.end(), std::min(x0, x1));
         const auto last = std::upper_bound(stations.begin(), stations.end(), std::max(x0, x1));
@@ -147,217 +148,247 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
         } else {
             for (auto r = last; r != it;) visit(static_cast<std::size_t>(--r - stations.begin()));
         }
-    };
+    }
+};
 
-    // A flight from x; at the water level (`crossing`) the medium is the one the block is going into.
-    const auto fly = [&](const Vec2& from, const Vec2& v, double spin, bool crossing = false) {
-        flight.model = (crossing ? v.y() < 0.0 : profile_.wet(from.y())) ? wet : dry;
-        flight.spin = spin;
-        // CVODE finds an impact where the clearance changes sign, so a flight must start strictly above the
-        // ground: off an impact or a vertex it starts on it (to round-off), and near a concave vertex the next
-        // segment may rise across its path at once, inside CVODE's first step. Near a vertex ahead (what the
-        // first steps, under 10 ms, can reach), a lift to 1e-12 of the position's size (a few times the round-off
-        // of the impact point) makes that next impact a sign change; elsewhere the block leaves the segment it
-        // is on, and nothing is changed.
-        Vec2 x = from;
-        const double lift = 1e-12 * (1.0 + x.norm());
-        const double ahead = x.x() + (v.x() >= 0.0 ? 1.0 : -1.0) * (0.01 * std::abs(v.x()) + 1e-6);
-        if (const double c = profile_.clearance(x);
-            c < lift && profile_.segment_at(ahead) != profile_.segment_at(x.x()))
-            x += (lift - c) * segments[profile_.segment_at(x.x())].normal;
-        start(flight, t, x, v);
-    };
-
-    // A slide from s along segment k at velocity v along its tangent, in closed form (slide_motion.hpp), from
-    // event to event: the segment's end (a take-off at a convex vertex, the next segment at a concave one), the
-    // water level, rest. Returns true if it ends in a take-off (then `fly` has been called), false if the
-    // trajectory is over (`out` is final).
-    double friction = 0.0;  // tan of the friction angle, drawn when a slide starts or meets a new material
-    const auto slide = [&](int k, double s, double v, bool new_slide) -> bool {
-        int material = -1;
-        bool in_water = profile_.wet((segments[k].start + s * segments[k].tangent).y());
-        if (!new_slide) material = segments[k].material;  // the friction drawn on this material goes on
-        long events = 0;
-        for (;;) {
-            const SlopeSegment& seg = segments[k];
-            if (seg.material != material) {
-                material = seg.material;
-                friction = std::tan(materials_[material].friction_angle.sample(rng) * std::numbers::pi / 180.0);
-            }
-            const LumpedModelConfig& m = in_water ? wet : dry;
-            const double fluid_mass = m.fluid_density * m.volume, buoyant = m.mass - fluid_mass;
-            const double along = buoyant * m.gravity.dot(seg.tangent), pressing = -buoyant * m.gravity.dot(seg.normal);
-            const Vec2 here = seg.start + s * seg.tangent;
-            if (v == 0.0 && std::abs(along) <= friction * pressing) {
-                finish(TrajectoryEnd::rest, here, Vec2::Zero());
-                return false;
-            }
-            const double d = v != 0.0 ? (v > 0.0 ? 1.0 : -1.0) : (along > 0.0 ? 1.0 : -1.0);
-            const double effective_mass = m.mass + m.added_mass_coefficient * fluid_mass;
-            const SlideMotion motion((d * along - friction * pressing) / effective_mass,
-                                     0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area / effective_mass,
-                                     std::abs(v));
-            // The next event along the direction of motion.
-            const double to_end = d > 0.0 ? seg.length - s : s;
-            const double rise = d * seg.tangent.y();  // dz per metre travelled
-            double to_water = infinity;
-            if (rise != 0.0) {
-                const double w = (profile_.water_level() - here.y()) / rise;
-                if (w > 1e-12 * (1.0 + seg.length) && w < to_end) to_water = w;
-            }
-            const double to_stop = motion.stop_distance();
-            const double go = std::min({to_end, to_water, to_stop});
-            double tau = go == to_stop ? motion.stop_time() : motion.time_to(go);
-            const bool timed_out = t + tau >= settings_.end_time;
-            if (timed_out) tau = settings_.end_time - t;
-            const double travelled = timed_out ? motion.distance(tau) : go;
-            const Vec2 there = seg.start + (s + d * travelled) * seg.tangent;
-            stations_between(here.x(), there.x(), [&](std::size_t j) {
-                const double at = motion.time_to(std::abs(stations[j] - here.x()) / std::abs(seg.tangent.x()));
-                const double u = motion.speed(at);
-                cross(j,
-                      seg.start + (s + d * std::abs(stations[j] - here.x()) / std::abs(seg.tangent.x())) * seg.tangent,
-                      u, 0.0, 0.0);  // sliding, not rolling: no spin
-            });
-            const double u_end = go == to_stop && !timed_out ? 0.0 : motion.speed(tau);
-            out.max_speed = std::max({out.max_speed, std::abs(v), u_end});
-            if (record_path) {
-                if (out.path.empty() || !out.path.back().sliding) out.path.push_back({t, here, v * seg.tangent, true});
-                out.path.push_back({t + tau, there, d * u_end * seg.tangent, true});
-            }
-            t += tau;
-            s += d * travelled;
-            if (timed_out) {
-                finish(TrajectoryEnd::time_limit, there, d * u_end * seg.tangent);
-                return false;
-            }
-            v = d * u_end;
-            if (go == to_stop) {
-                v = 0.0;  // rests if the friction holds, else slides back
-                continue;
-            }
-            if (go == to_water) {
-                in_water = rise < 0.0;  // going down: into the water
-                continue;
-            }
-            // The segment's end.
-            const int next = k + static_cast<int>(d);
-            const Vec2 velocity = v * seg.tangent;
-            if (next < 0 || next >= static_cast<int>(segments.size())) {
-                finish(d > 0.0 ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, there, velocity);
-                return false;
-            }
-            const SlopeSegment& ns = segments[next];
-            if (velocity.dot(ns.normal) > 0.0) {  // convex: the ground falls away, the block takes off
-                fly(there, velocity, 0.0);        // off a slide: no spin
-                return true;
-            }
-            k = next;  // concave: it keeps its velocity along the new segment
-            s = d > 0.0 ? 0.0 : ns.length;
-            v = velocity.dot(ns.tangent);
-            // In a valley (a vertex both of whose segments rise away from it) a block steeper than its friction
-            // rocks from side to side, losing a factor cos(turn) at each crossing: infinitely many crossings in a
-            // finite time. Below 1 mm/s at the bottom it rests there.
-            if (std::abs(v) < kValleyRestSpeed && (d > 0.0 ? ns.tangent.y() > 0.0 : ns.tangent.y() < 0.0) &&
-                (d > 0.0 ? seg.tangent.y() < 0.0 : seg.tangent.y() > 0.0)) {
-                finish(TrajectoryEnd::rest, there, Vec2::Zero());
-                return false;
-            }
-            if (++events > kMaxSlideEvents) {  // a guard: a slide that has not settled after that many events
-                finish(TrajectoryEnd::rest, there, velocity);
-                return false;
-            }
-        }
-    };
+TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2& start_position,
+                                           const Vec2& start_velocity, const std::vector<double>& stations,
+                                           std::mt19937_64& rng, bool record_path) {
+    Run run{block,
+            stations,
+            rng,
+            record_path,
+            flight_model(block, true),
+            flight_model(block, false),
+            0.5 * block.size,
+            block.mass(),
+            block.moment_of_inertia(),
+            {},
+            0.0,
+            0.0,
+            {}};
+    run.flight.self = this;
+    TrajectoryResult& out = run.out;
+    out.stations.assign(stations.size(), {});
+    out.max_speed = start_velocity.norm();
 
     if (profile_.clearance(start_position) < -1e-12 * (1.0 + start_position.norm()))  // on it to round-off is on it
         throw std::invalid_argument("the release point lies below the ground");
     // Released on the ground and not leaving it: a slide from the start (the velocity along the ground).
     if (const int k = profile_.segment_at(start_position.x());
         profile_.clearance(start_position) <= 1e-12 * (1.0 + start_position.norm()) &&
-        start_velocity.dot(segments[k].normal) <= 0.0) {
-        const SlopeSegment& seg = segments[k];
-        if (!slide(k, (start_position - seg.start).dot(seg.tangent), start_velocity.dot(seg.tangent), true)) return out;
+        start_velocity.dot(profile_.segments()[k].normal) <= 0.0) {
+        const SlopeSegment& seg = profile_.segments()[k];
+        if (!slide(run, k, (start_position - seg.start).dot(seg.tangent), start_velocity.dot(seg.tangent), true))
+            return out;
     } else {
-        fly(start_position, start_velocity, 0.0);
+        fly(run, start_position, start_velocity, 0.0);
     }
 
+    // The flight, step by step: stations crossed, then what stopped the step (the ground, the water level, the
+    // top of a bounce, the profile's ends, the end time).
     sunrealtype* Y = N_VGetArrayPointer(y_);
     std::vector<int> found(5);
     for (;;) {
-        const double t_before = t, x_before = Y[0];
-        const int flag = CVode(cvode_, settings_.end_time, y_, &t, CV_ONE_STEP);
+        const double t_before = run.t, x_before = Y[0];
+        const int flag = CVode(cvode_, settings_.end_time, y_, &run.t, CV_ONE_STEP);
         check(flag, "CVode");
         const Vec2 x(Y[0], Y[1]), v(Y[2], Y[3]);
         if (flag != CV_ROOT_RETURN && profile_.clearance(x) < -1e-6)
             throw std::logic_error("hazard trajectory: the block passed under the ground at x = " +
-                                   std::to_string(x.x()) + ", t = " + std::to_string(t) + " (an impact missed)");
-        stations_between(x_before, x.x(), [&](std::size_t j) {
-            // The crossing time by secant on x(t) through CVODE's interpolant (x is nearly linear in a step).
-            double ta = t_before, xa = x_before, tb = t, xb = x.x(), tau = t;
-            Vec2 xc = x, vc = v;
-            for (int iter = 0; iter < 20; ++iter) {
-                tau = ta + (stations[j] - xa) * (tb - ta) / (xb - xa);
-                check(CVodeGetDky(cvode_, tau, 0, dky_), "CVodeGetDky");
-                const sunrealtype* D = N_VGetArrayPointer(dky_);
-                xc = Vec2(D[0], D[1]), vc = Vec2(D[2], D[3]);
-                if (std::abs(xc.x() - stations[j]) < 1e-9 * (1.0 + std::abs(stations[j]))) break;
-                if ((xc.x() - stations[j]) * (xa - stations[j]) > 0.0)
-                    ta = tau, xa = xc.x();
-                else
-                    tb = tau, xb = xc.x();
-            }
-            cross(j, xc, vc.norm(), flight.spin, std::max(0.0, profile_.clearance(xc)));
-        });
+                                   std::to_string(x.x()) + ", t = " + std::to_string(run.t) + " (an impact missed)");
+        record_flight_crossings(run, t_before, x_before, x.x());
         out.max_speed = std::max(out.max_speed, v.norm());
-        if (record_path) out.path.push_back({t, x, v, false});
-        if (flag == CV_TSTOP_RETURN || t >= settings_.end_time) return finish(TrajectoryEnd::time_limit, x, v);
+        if (record_path) out.path.push_back({run.t, x, v, false});
+        if (flag == CV_TSTOP_RETURN || run.t >= settings_.end_time) {
+            run.finish(TrajectoryEnd::time_limit, x, v);
+            return out;
+        }
         if (flag != CV_ROOT_RETURN) continue;
         check(CVodeGetRootInfo(cvode_, found.data()), "CVodeGetRootInfo");
-        if (found[2] || found[3]) return finish(found[3] ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, x, v);
-        if (found[0]) {  // an impact
-            const int k = profile_.segment_at(x.x());
-            const SlopeSegment& seg = segments[k];
-            const Material& m = materials_[seg.material];
-            Vec2 n = seg.normal;
-            if (m.roughness > 0.0) {  // the segment's angle perturbed, still facing the block
-                std::normal_distribution<double> rough(0.0, m.roughness * std::numbers::pi / 180.0);
-                for (int tries = 0; tries < 10; ++tries) {
-                    const double a = rough(rng);
-                    const Vec2 nr(std::cos(a) * n.x() - std::sin(a) * n.y(), std::sin(a) * n.x() + std::cos(a) * n.y());
-                    if (v.dot(nr) < 0.0) {
-                        n = nr;
-                        break;
-                    }
-                }
-            }
-            const Vec2 tangent(n.y(), -n.x());
-            const double vn = v.dot(n), vt = v.dot(tangent);
-            const double rn = m.normal_restitution.sample(rng), rt = m.tangential_restitution.sample(rng);
-            Impact e;
-            e.t = t;
-            e.position = x;
-            e.velocity_before = v;
-            e.wet = profile_.wet(x.y());
-            e.stokes =
-                e.wet ? impact_stokes_number(block.density, std::abs(vn), block.size, water_.viscosity) : infinity;
-            const Restitution r =
-                e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes) : Restitution{rn, rt};
-            e.normal_restitution = r.normal;
-            e.tangential_restitution = r.tangential;
-            e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;
-            out.impacts.push_back(e);
-            const Vec2 after = e.velocity_after;
-            if (after.dot(seg.normal) < settings_.sliding_speed ||
-                static_cast<int>(out.impacts.size()) >= settings_.max_impacts) {
-                if (!slide(k, (x - seg.start).dot(seg.tangent), after.dot(seg.tangent), true)) return out;
-            } else {
-                fly(x, after, after.dot(seg.tangent) / radius);
-            }
+        if (found[2] || found[3]) {
+            run.finish(found[3] ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, x, v);
+            return out;
+        }
+        if (found[0]) {
+            if (!impact(run, x, v)) return out;
             continue;
         }
-        if (found[1]) fly(x, v, flight.spin, true);                                      // into or out of the water
-        if (found[4] && !found[1]) out.apexes.push_back({t, x, profile_.clearance(x)});  // flies on
+        if (found[1]) fly(run, x, v, run.flight.spin, true);                                 // into or out of the water
+        if (found[4] && !found[1]) out.apexes.push_back({run.t, x, profile_.clearance(x)});  // flies on
+    }
+}
+
+void TrajectoryIntegrator::fly(Run& run, const Vec2& from, const Vec2& v, double spin, bool crossing) {
+    // At the water level (`crossing`) the medium is the one the block is going into.
+    run.flight.model = (crossing ? v.y() < 0.0 : profile_.wet(from.y())) ? run.wet : run.dry;
+    run.flight.spin = spin;
+    // CVODE finds an impact where the clearance changes sign, so a flight must start strictly above the ground:
+    // off an impact or a vertex it starts on it (to round-off), and near a concave vertex the next segment may rise
+    // across its path at once, inside CVODE's first step. Near a vertex ahead (what the first steps, under 10 ms,
+    // can reach), a lift to 1e-12 of the position's size (a few times the round-off of the impact point) makes
+    // that next impact a sign change; elsewhere the block leaves the segment it is on, and nothing is changed.
+    Vec2 x = from;
+    const double lift = 1e-12 * (1.0 + x.norm());
+    const double ahead = x.x() + (v.x() >= 0.0 ? 1.0 : -1.0) * (0.01 * std::abs(v.x()) + 1e-6);
+    if (const double c = profile_.clearance(x); c < lift && profile_.segment_at(ahead) != profile_.segment_at(x.x()))
+        x += (lift - c) * profile_.segments()[profile_.segment_at(x.x())].normal;
+    start(run.flight, run.t, x, v);
+}
+
+void TrajectoryIntegrator::record_flight_crossings(Run& run, double t0, double x0, double x1) {
+    run.stations_between(x0, x1, [&](std::size_t j) {
+        // The crossing time by secant on x(t) through CVODE's interpolant (x is nearly linear in a step).
+        const double station = run.stations[j];
+        double ta = t0, xa = x0, tb = run.t, xb = x1, tau = run.t;
+        Vec2 x, v;
+        for (int iter = 0; iter < 20; ++iter) {
+            tau = ta + (station - xa) * (tb - ta) / (xb - xa);
+            check(CVodeGetDky(cvode_, tau, 0, dky_), "CVodeGetDky");
+            const sunrealtype* D = N_VGetArrayPointer(dky_);
+            x = Vec2(D[0], D[1]), v = Vec2(D[2], D[3]);
+            if (std::abs(x.x() - station) < 1e-9 * (1.0 + std::abs(station))) break;
+            if ((x.x() - station) * (xa - station) > 0.0)
+                ta = tau, xa = x.x();
+            else
+                tb = tau, xb = x.x();
+        }
+        run.cross(j, v.norm(), run.flight.spin, std::max(0.0, profile_.clearance(x)));
+    });
+}
+
+bool TrajectoryIntegrator::impact(Run& run, const Vec2& x, const Vec2& v) {
+    const int k = profile_.segment_at(x.x());
+    const SlopeSegment& seg = profile_.segments()[k];
+    const Material& m = materials_[seg.material];
+    Vec2 n = seg.normal;
+    if (m.roughness > 0.0) {  // the segment's angle perturbed, still facing the block
+        std::normal_distribution<double> rough(0.0, m.roughness * std::numbers::pi / 180.0);
+        for (int tries = 0; tries < 10; ++tries) {
+            const double a = rough(run.rng);
+            const Vec2 nr(std::cos(a) * n.x() - std::sin(a) * n.y(), std::sin(a) * n.x() + std::cos(a) * n.y());
+            if (v.dot(nr) < 0.0) {
+                n = nr;
+                break;
+            }
+        }
+    }
+    const Vec2 tangent(n.y(), -n.x());
+    const double vn = v.dot(n), vt = v.dot(tangent);
+    const double rn = m.normal_restitution.sample(run.rng), rt = m.tangential_restitution.sample(run.rng);
+    Impact e;
+    e.t = run.t;
+    e.position = x;
+    e.velocity_before = v;
+    e.wet = profile_.wet(x.y());
+    e.stokes =
+        e.wet ? impact_stokes_number(run.block.density, std::abs(vn), run.block.size, water_.viscosity) : infinity;
+    const Restitution r = e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes) : Restitution{rn, rt};
+    e.normal_restitution = r.normal;
+    e.tangential_restitution = r.tangential;
+    e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;
+    run.out.impacts.push_back(e);
+    const Vec2 after = e.velocity_after;
+    if (after.dot(seg.normal) < settings_.sliding_speed ||
+        static_cast<int>(run.out.impacts.size()) >= settings_.max_impacts)
+        return slide(run, k, (x - seg.start).dot(seg.tangent), after.dot(seg.tangent), true);
+    fly(run, x, after, after.dot(seg.tangent) / run.radius);  // rolling off: omega = v_t' / (a / 2)
+    return true;
+}
+
+bool TrajectoryIntegrator::slide(Run& run, int k, double s, double v, bool new_slide) {
+    const auto& segments = profile_.segments();
+    TrajectoryResult& out = run.out;
+    int material = new_slide ? -1 : segments[k].material;  // the friction drawn on this material goes on
+    bool in_water = profile_.wet((segments[k].start + s * segments[k].tangent).y());
+    long events = 0;
+    for (;;) {
+        const SlopeSegment& seg = segments[k];
+        if (seg.material != material) {
+            material = seg.material;
+            run.friction = std::tan(materials_[material].friction_angle.sample(run.rng) * std::numbers::pi / 180.0);
+        }
+        const LumpedModelConfig& m = in_water ? run.wet : run.dry;
+        const double fluid_mass = m.fluid_density * m.volume, buoyant = m.mass - fluid_mass;
+        const double along = buoyant * m.gravity.dot(seg.tangent), pressing = -buoyant * m.gravity.dot(seg.normal);
+        const Vec2 here = seg.start + s * seg.tangent;
+        if (v == 0.0 && std::abs(along) <= run.friction * pressing) {
+            run.finish(TrajectoryEnd::rest, here, Vec2::Zero());
+            return false;
+        }
+        const double d = v != 0.0 ? (v > 0.0 ? 1.0 : -1.0) : (along > 0.0 ? 1.0 : -1.0);
+        const double effective_mass = m.mass + m.added_mass_coefficient * fluid_mass;
+        const SlideMotion motion((d * along - run.friction * pressing) / effective_mass,
+                                 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area / effective_mass,
+                                 std::abs(v));
+        // The next event along the direction of motion: the segment's end, the water level, rest.
+        const double to_end = d > 0.0 ? seg.length - s : s;
+        const double rise = d * seg.tangent.y();  // dz per metre travelled
+        double to_water = infinity;
+        if (rise != 0.0) {
+            const double w = (profile_.water_level() - here.y()) / rise;
+            if (w > 1e-12 * (1.0 + seg.length) && w < to_end) to_water = w;
+        }
+        const double to_stop = motion.stop_distance();
+        const double go = std::min({to_end, to_water, to_stop});
+        double tau = go == to_stop ? motion.stop_time() : motion.time_to(go);
+        const bool timed_out = run.t + tau >= settings_.end_time;
+        if (timed_out) tau = settings_.end_time - run.t;
+        const double travelled = timed_out ? motion.distance(tau) : go;
+        const Vec2 there = seg.start + (s + d * travelled) * seg.tangent;
+        run.stations_between(here.x(), there.x(), [&](std::size_t j) {
+            const double u =
+                motion.speed(motion.time_to(std::abs(run.stations[j] - here.x()) / std::abs(seg.tangent.x())));
+            run.cross(j, u, 0.0, 0.0);  // sliding, not rolling: no spin
+        });
+        const double u_end = go == to_stop && !timed_out ? 0.0 : motion.speed(tau);
+        out.max_speed = std::max({out.max_speed, std::abs(v), u_end});
+        if (run.record_path) {
+            if (out.path.empty() || !out.path.back().sliding) out.path.push_back({run.t, here, v * seg.tangent, true});
+            out.path.push_back({run.t + tau, there, d * u_end * seg.tangent, true});
+        }
+        run.t += tau;
+        s += d * travelled;
+        if (timed_out) {
+            run.finish(TrajectoryEnd::time_limit, there, d * u_end * seg.tangent);
+            return false;
+        }
+        v = d * u_end;
+        if (go == to_stop) {
+            v = 0.0;  // rests if the friction holds, else slides back
+            continue;
+        }
+        if (go == to_water) {
+            in_water = rise < 0.0;  // going down: into the water
+            continue;
+        }
+        // The segment's end.
+        const int next = k + static_cast<int>(d);
+        const Vec2 velocity = v * seg.tangent;
+        if (next < 0 || next >= static_cast<int>(segments.size())) {
+            run.finish(d > 0.0 ? TrajectoryEnd::past_end : TrajectoryEnd::past_start, there, velocity);
+            return false;
+        }
+        const SlopeSegment& ns = segments[next];
+        if (velocity.dot(ns.normal) > 0.0) {  // convex: the ground falls away, the block takes off
+            fly(run, there, velocity, 0.0);   // off a slide: no spin
+            return true;
+        }
+        k = next;  // concave: it keeps its velocity along the new segment
+        s = d > 0.0 ? 0.0 : ns.length;
+        v = velocity.dot(ns.tangent);
+        // In a valley (a vertex both of whose segments rise away from it) a block steeper than its friction rocks
+        // from side to side, losing a factor cos(turn) at each crossing: infinitely many crossings in a finite
+        // time. Below 1 mm/s at the bottom it rests there.
+        if (std::abs(v) < kValleyRestSpeed && (d > 0.0 ? ns.tangent.y() > 0.0 : ns.tangent.y() < 0.0) &&
+            (d > 0.0 ? seg.tangent.y() < 0.0 : seg.tangent.y() > 0.0)) {
+            run.finish(TrajectoryEnd::rest, there, Vec2::Zero());
+            return false;
+        }
+        if (++events > kMaxSlideEvents) {  // a guard: a slide that has not settled after that many events
+            run.finish(TrajectoryEnd::rest, there, velocity);
+            return false;
+        }
     }
 }
 

@@ -114,7 +114,21 @@ public:
     struct Flight;  // what CVODE integrates, internal
 
 private:
+    struct Run;  // one trajectory's state while it runs
+
+    // (Re)starts CVODE on a flight from x at velocity v.
     void start(const Flight& flight, double t, const Vec2& x, const Vec2& v);
+    // A flight from `from` (just above the ground if it starts on it); at the water level (`crossing`) in the
+    // medium the block is going into.
+    void fly(Run& run, const Vec2& from, const Vec2& v, double spin, bool crossing = false);
+    // The stations crossed in CVODE's last step, from x0 to x1 (its interpolant gives the state at each).
+    void record_flight_crossings(Run& run, double t0, double x0, double x1);
+    // An impact at x: the rebound law, then a flight or a slide. False if the trajectory is over.
+    bool impact(Run& run, const Vec2& x, const Vec2& v);
+    // A slide from s along segment k at velocity v along its tangent, in closed form (slide_motion.hpp), from event
+    // to event: the segment's end (a take-off at a convex vertex, the next segment at a concave one), the water
+    // level, rest. True if it ends in a take-off (the flight started), false if the trajectory is over.
+    bool slide(Run& run, int k, double s, double v, bool new_slide);
 
     const SlopeProfile& profile_;
     const std::vector<Material>& materials_;
