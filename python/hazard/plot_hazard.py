@@ -111,6 +111,15 @@ def x_view(run):
     return (x0, end), ("" if end >= x1 else f" (the profile goes on to {x1:g} m, where no block goes)")
 
 
+def finish(fig, run, name):
+    """Lays the figure out, writes it into the run's folder (atomically) and returns its path."""
+    fig.tight_layout()
+    path = os.path.join(run.folder, name)
+    save(fig, path)
+    plt.close(fig)
+    return path
+
+
 def plot_profile(run):
     fig, (ax, ax_stop) = plt.subplots(2, 1, figsize=(12, 8.5), sharex=True, gridspec_kw={"height_ratios": [2.2, 1]})
     zmin, zmax = run.profile_z.min(), run.profile_z.max()
@@ -163,11 +172,7 @@ def plot_profile(run):
     ax_stop.legend(handles, [h.get_label() for h in handles], fontsize=8, loc="center right")
     ax_stop.set_title("Where the blocks stopped, and the probability that a block stops beyond x", fontsize=10)
     ax_stop.set_xlim(x0, x1)
-    fig.tight_layout()
-    path = os.path.join(run.folder, "profile.png")
-    save(fig, path)
-    plt.close(fig)
-    return path
+    return finish(fig, run, "profile.png")
 
 
 def plot_envelopes(run):
@@ -237,11 +242,7 @@ def plot_collectors(run):
             ax.axvline(v, color="C3", ls=style, lw=1.2, label=f"p{q} {v:.4g} J")
         ax.legend(fontsize=8)
     fig.suptitle(f"{run.name()}: energies of the blocks that hit each collector", fontsize=11)
-    fig.tight_layout()
-    path = os.path.join(run.folder, "collectors.png")
-    save(fig, path)
-    plt.close(fig)
-    return path
+    return finish(fig, run, "collectors.png")
 
 
 def main(folder):
