@@ -2,12 +2,6 @@
 
 #include <mpi.h>
 
-#define CSV_IO_NO_THREAD
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wstringop-truncation"  // its file-name copy for messages, cut at 255 on purpose
-#include <libfccp/csv.h>
-#pragma GCC diagnostic pop
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +13,7 @@
 #include "case_reader.hpp"
 #include "hdf5_file.hpp"
 #include "run_command.hpp"
+#include "text_file.hpp"
 
 namespace {
 
@@ -115,7 +110,7 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
     if (!std::filesystem::exists(spec_file))
         throw chute::CaseError(spec_file.string() + ": calibration spec not found");
     chute::CaseReader r(spec_keys(), spec_placeholders(), spec_file.string());
-    r.add_text(read_file(spec_file));
+    r.add_text(chute::read_text_file(spec_file));
     r.check_presence();
     const std::filesystem::path folder = spec_file.parent_path().empty() ? "." : spec_file.parent_path();
     const std::string name = r.present("name") ? r.string("name") : spec_file.stem().string();
@@ -141,7 +136,8 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
         const std::filesystem::path dir = out / "runs" / run.name;
         const std::string text = case_as_run(run.case_file, run.overrides);
         const bool done = !redo && std::filesystem::exists(dir / "summary.txt") &&
-                          std::filesystem::exists(dir / "case.yaml") && read_file(dir / "case.yaml") == text;
+                          std::filesystem::exists(dir / "case.yaml") &&
+                          chute::read_text_file(dir / "case.yaml") == text;
         if (rank == 0)
             std::printf("chute calibrate: %s (%zu of %zu): %s\n", run.name.c_str(), i + 1, runs.size(),
                         done ? "reusing the run already made" : "running");

@@ -32,6 +32,7 @@
 #include "run_command.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
+#include "text_file.hpp"
 
 namespace {
 
@@ -97,7 +98,8 @@ int sweep_command(const std::filesystem::path& case_file, const std::filesystem:
             std::printf("chute: sweep run %zu of %zu: %s\n", k + 1, runs.size(), folders[k].string().c_str());
         const int code = run_command(case_file, folders[k], all, "", no_plots);
         if (rank == 0) {
-            report += "== " + folders[k].filename().string() + "\n" + read_file(folders[k] / "summary.txt") + "\n";
+            report += "== " + folders[k].filename().string() + "\n" +
+                      chute::read_text_file(folders[k] / "summary.txt") + "\n";
             chute::write_text_atomically(base / "sweep.txt", report);
         }
         if (code != 0) return code;

@@ -14,16 +14,10 @@
 #include "restart_state.hpp"
 #include "simulation.hpp"
 #include "stop_request.hpp"
-
-std::string read_file(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+#include "text_file.hpp"
 
 std::string case_as_run(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    std::string text = read_file(file);
+    std::string text = chute::read_text_file(file);
     if (!overrides.empty()) {
         text += "\n# Overrides given on the command line (--set), applied on top of the keys above:\n";
         for (const auto& o : overrides) text += "#   " + o + "\n";

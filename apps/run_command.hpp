@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-std::string read_file(const std::filesystem::path& p);
 // The case as run: the file as written, followed by the --set overrides applied to it.
 std::string case_as_run(const std::filesystem::path& file, const std::vector<std::string>& overrides);
 // Returns the process's exit code (0, or 128 + the signal that stopped the run early).

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <random>
 
+#include "text_file.hpp"
+
 namespace chute {
 
 namespace {
@@ -124,7 +126,6 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         (normal ? law.kappa_n : law.kappa_t) = kappa;
         return law;
     };
-    const auto is_bed = [](const BounceObservation& o) { return std::abs(o.slope_angle) < 1e-9; };
     for (const BounceObservation& o : bounces) {
         CalibrationPoint p;
         p.cfd = o;
@@ -136,7 +137,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         std::vector<CalibrationPoint*> used;
         double limit = 2.0;
         for (CalibrationPoint& p : out.points) {
-            if (!p.cfd.fitted || is_bed(p.cfd) != normal || (!normal && !std::isfinite(p.cfd.runout))) continue;
+            if (!p.cfd.fitted || p.cfd.on_bed() != normal || (!normal && !std::isfinite(p.cfd.runout))) continue;
             used.push_back(&p);
             limit = std::min(limit, 1.0 / (normal ? p.cfd.normal_restitution : p.cfd.tangential_restitution));
         }
@@ -169,12 +170,6 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
 
 namespace {
 
-std::string format(const char* f, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, f, args...);
-    return buffer;
-}
-
 double percent(double model, double cfd) { return 100.0 * (model - cfd) / cfd; }
 
 }  // namespace
@@ -183,16 +178,16 @@ std::string calibration_points_csv(const Calibration& c) {
     std::string t =
         "run,use,slope_deg,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa\n";
     for (const CalibrationPoint& p : c.points)
-        t += format("%s,%s,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g\n", p.cfd.name.c_str(),
-                    p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
-                    p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
-                    p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa);
+        t += printf_text("%s,%s,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g\n", p.cfd.name.c_str(),
+                         p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+                         p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
+                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa);
     return t;
 }
 
 std::string calibration_markdown(const Calibration& c) {
     const CalibrationFile& k = c.constants;
-    std::string t = format(
+    std::string t = printf_text(
         "Block %.3g m, %.4g kg/m^3. Free fall: terminal speed %.4f m/s -> C_D = %.4f; early speed up to %.3f s -> "
         "C_a = %.4f (rms misfit %.3g m/s). Bounces: kappa_n = %.4f, kappa_t = %.4f, beta = %.3g.\n\n",
         k.block_size, k.block_density, c.terminal_speed, k.drag_coefficient, c.early_window, k.added_mass_coefficient,
@@ -200,15 +195,16 @@ std::string calibration_markdown(const Calibration& c) {
     t += "| run | use | slope | impact (along, normal) m/s | St | height CFD | height lumped | diff | runout CFD | "
          "runout lumped | diff | own kappa |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
-        const bool bed = std::abs(p.cfd.slope_angle) < 1e-9;  // straight up and down: no runout
-        const std::string runout = bed ? "- | - | -"
-                                       : format("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
-                                                percent(p.lumped_runout, p.cfd.runout));
-        t += format("| %s | %s | %.0f deg | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s |\n",
-                    p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
-                    p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
-                    p.lumped_height, percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
-                    std::isfinite(p.kappa) ? format("%.4f", p.kappa).c_str() : "-");
+        const std::string runout = p.cfd.on_bed()
+                                       ? "- | - | -"
+                                       : printf_text("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
+                                                     percent(p.lumped_runout, p.cfd.runout));
+        t += printf_text("| %s | %s | %.0f deg | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s |\n",
+                         p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
+                         p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.impact_velocity.x(),
+                         p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height, p.lumped_height,
+                         percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
+                         std::isfinite(p.kappa) ? printf_text("%.4f", p.kappa).c_str() : "-");
     }
     return t;
 }

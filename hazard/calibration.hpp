@@ -15,6 +15,7 @@
 // The CFD runs measure bounces as the study ran them: a horizontal bed with gravity tilted by the slope's angle
 // (the physics of a slope), impacts at the contact distance; the lumped block meets a plane along the same
 // gravity at the same velocity, so both measure height and runout from their impact point.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct BounceObservation {
     double runout = 0.0;          // along the bed from the first impact to the second (NaN: no second one)
     double size = 0.0, density = 0.0;
     double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
+    bool on_bed() const { return std::abs(slope_angle) < 1e-9; }    // straight up and down: no runout
 };
 
 struct BlockFluid {

@@ -9,6 +9,7 @@
 
 #include "calibration_file.hpp"
 #include "case_reader.hpp"
+#include "text_file.hpp"
 
 namespace chute {
 
@@ -192,13 +193,6 @@ const Schema& schema() {
     return s;
 }
 
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 double model_number(const CaseReader& r, const char* key, const CalibrationFile* calibration, double from_file) {
     return r.present(key) || calibration == nullptr ? r.number(key) : from_file;
 }
@@ -334,7 +328,7 @@ HazardCase load_hazard_case(const std::filesystem::path& file, const std::vector
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) throw CaseError(file.string() + ": case file not found");
     CaseReader r(schema().keys, schema().placeholders, file.string());
-    r.add_text(read_text(file));
+    r.add_text(read_text_file(file));
     for (const std::string& o : overrides) r.add_override(o);
     return read_hazard_case(r, file.stem().string(), file.parent_path().empty() ? "." : file.parent_path());
 }

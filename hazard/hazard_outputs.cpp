@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "hdf5_file.hpp"
+#include "text_file.hpp"
 
 namespace chute {
 
@@ -22,35 +23,30 @@ const char* end_name(TrajectoryEnd e) {
     return "?";
 }
 
-std::string format(const char* f, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, f, args...);
-    return buffer;
-}
-
 }  // namespace
 
 std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, double seconds, int ranks) {
     const SlopeProfile profile = c.profile();
-    std::string t =
-        format("hazard '%s': %ld trajectories over %zu segments in %.2f s on %d rank(s) (%.0f per s)\n", c.name.c_str(),
-               s.trajectories, profile.segments().size(), seconds, ranks, s.trajectories / std::max(seconds, 1e-9));
-    t += format("  water level %s; model C_D %.4g, C_a %.4g, kappa_n %.4g, kappa_t %.4g, beta %.4g%s\n",
-                c.water_level > -1e29 ? format("%.6g m", c.water_level).c_str() : "none (dry)",
-                c.settings.drag_coefficient, c.settings.added_mass_coefficient, c.settings.wet_rebound.kappa_n,
-                c.settings.wet_rebound.kappa_t, c.settings.wet_rebound.beta,
-                c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
-    t += format("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
-                s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
-    t += format("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,
-                s.stop_p95, s.stop_p99, s.stop_max);
+    std::string t = printf_text(
+        "hazard '%s': %ld trajectories over %zu segments in %.2f s on %d rank(s) (%.0f per s)\n", c.name.c_str(),
+        s.trajectories, profile.segments().size(), seconds, ranks, s.trajectories / std::max(seconds, 1e-9));
+    t += printf_text("  water level %s; model C_D %.4g, C_a %.4g, kappa_n %.4g, kappa_t %.4g, beta %.4g%s\n",
+                     c.water_level > -1e29 ? printf_text("%.6g m", c.water_level).c_str() : "none (dry)",
+                     c.settings.drag_coefficient, c.settings.added_mass_coefficient, c.settings.wet_rebound.kappa_n,
+                     c.settings.wet_rebound.kappa_t, c.settings.wet_rebound.beta,
+                     c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
+    t += printf_text("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
+                     s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
+    t += printf_text("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,
+                     s.stop_p95, s.stop_p99, s.stop_max);
     for (const CollectorSummary& k : s.collectors)
-        t += format("  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g)%s\n",
-                    k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits, k.hit_probability,
-                    k.hits ? format("; hit energy mean %.4g J, p50 %.4g, p95 %.4g, max %.4g", k.energy_mean,
-                                    k.energy_p50, k.energy_p95, k.energy_max)
-                                 .c_str()
-                           : "");
+        t += printf_text("  collector %s (x %.6g m, height %.3g m): %ld pass, %ld hit (probability %.4g)%s\n",
+                         k.collector.name.c_str(), k.collector.x, k.collector.height, k.passing, k.hits,
+                         k.hit_probability,
+                         k.hits ? printf_text("; hit energy mean %.4g J, p50 %.4g, p95 %.4g, max %.4g", k.energy_mean,
+                                              k.energy_p50, k.energy_p95, k.energy_max)
+                                      .c_str()
+                                : "");
     return t;
 }
 
@@ -65,29 +61,31 @@ void write_hazard_outputs(const HazardCase& c, const HazardResults& r, const Haz
         "impacts\n";
     for (std::size_t i = 0; i < r.outcomes.size(); ++i) {
         const TrajectoryOutcome& o = r.outcomes[i];
-        t += format("%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%.9g,%.9g,%.9g,%.9g,%d\n", i, o.size, o.density,
-                    o.release.x(), o.release.y(), o.release_velocity.x(), o.release_velocity.y(), end_name(o.end),
-                    o.time, o.stop.x(), o.stop.y(), o.max_speed, o.impacts);
+        t += printf_text("%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%.9g,%.9g,%.9g,%.9g,%d\n", i, o.size, o.density,
+                         o.release.x(), o.release.y(), o.release_velocity.x(), o.release_velocity.y(), end_name(o.end),
+                         o.time, o.stop.x(), o.stop.y(), o.max_speed, o.impacts);
     }
     write_text_atomically(out / "trajectories.csv", t);
 
     t = "x,ground_z,reach_probability,passing_fraction,speed_mean,speed_p95,kinetic_mean,kinetic_p95,rotational_mean,"
         "rotational_p95,height_mean,height_p95\n";
     for (const StationSummary& st : s.stations)
-        t += format("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", st.x, st.ground, st.reach,
-                    st.passing_fraction, st.speed.mean, st.speed.p95, st.kinetic_energy.mean, st.kinetic_energy.p95,
-                    st.rotational_energy.mean, st.rotational_energy.p95, st.height.mean, st.height.p95);
+        t +=
+            printf_text("%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", st.x, st.ground, st.reach,
+                        st.passing_fraction, st.speed.mean, st.speed.p95, st.kinetic_energy.mean, st.kinetic_energy.p95,
+                        st.rotational_energy.mean, st.rotational_energy.p95, st.height.mean, st.height.p95);
     write_text_atomically(out / "stations.csv", t);
 
     t = "name,x,height,passing,hits,hit_probability,energy_mean,energy_p50,energy_p95,energy_max\n";
     for (const CollectorSummary& k : s.collectors)
-        t += format("%s,%.9g,%.9g,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g\n", k.collector.name.c_str(), k.collector.x,
-                    k.collector.height, k.passing, k.hits, k.hit_probability, k.energy_mean, k.energy_p50, k.energy_p95,
-                    k.energy_max);
+        t += printf_text("%s,%.9g,%.9g,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g\n", k.collector.name.c_str(), k.collector.x,
+                         k.collector.height, k.passing, k.hits, k.hit_probability, k.energy_mean, k.energy_p50,
+                         k.energy_p95, k.energy_max);
     write_text_atomically(out / "collectors.csv", t);
 
     t = "trajectory,t,x,z,speed,sliding\n";
-    for (const auto& p : r.paths) t += format("%.0f,%.9g,%.9g,%.9g,%.9g,%.0f\n", p[0], p[1], p[2], p[3], p[4], p[5]);
+    for (const auto& p : r.paths)
+        t += printf_text("%.0f,%.9g,%.9g,%.9g,%.9g,%.0f\n", p[0], p[1], p[2], p[3], p[4], p[5]);
     write_text_atomically(out / "paths.csv", t);
 
     write_atomically(out / "hazard.h5", [&](const std::filesystem::path& tmp) {

@@ -1,16 +1,11 @@
 #include "slope_profile.hpp"
 
-#define CSV_IO_NO_THREAD  // the file is small: no reading thread
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wstringop-truncation"  // its file-name copy for messages, cut at 255 on purpose
-#include <libfccp/csv.h>
-#pragma GCC diagnostic pop
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "exact_text.hpp"
+#include "text_file.hpp"
 
 namespace chute {
 
