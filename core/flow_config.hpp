@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "poisson_method.hpp"
+
 namespace chute {
 
 struct AxisConfig {
@@ -65,6 +67,7 @@ struct FlowConfig {
     double max_dt = 1e30;
     double poisson_tolerance = 1e-8;
     int poisson_max_iterations = 200;
+    PoissonMethod poisson_method = PoissonMethod::automatic;
     double divergence_limit = 1e-3;  // abort if max |div u| dt exceeds this
     std::array<int, 2> ranks{0, 0};  // 0: automatic
 };

@@ -453,6 +453,13 @@ std::vector<CaseKey> flow_keys() {
          .default_value = "200",
          .min = at_least(1),
          .meaning = "Iteration limit per solve."},
+        {.path = "numerics.poisson.solver",
+         .type = K::choice,
+         .default_value = "auto",
+         .choices = {"auto", "multigrid"},
+         .meaning = "`auto`: a direct solve (FFTW transform along a uniform axis, tridiagonal systems along the "
+                    "other) where an axis is uniform and no cell is solid, else hypre's PFMG-preconditioned CG "
+                    "(tolerance and max_iterations apply to it); `multigrid`: always hypre."},
         {.path = "numerics.divergence_limit",
          .type = K::number,
          .default_value = "1.0e-3",
@@ -522,6 +529,8 @@ FlowConfig read_flow(const CaseReader& r) {
                "must not exceed numerics.max_dt (" + exact_text(c.max_dt) + "), got " + exact_text(*c.fixed_dt));
     c.poisson_tolerance = r.number("numerics.poisson.tolerance");
     c.poisson_max_iterations = static_cast<int>(r.integer("numerics.poisson.max_iterations"));
+    c.poisson_method = r.choice<PoissonMethod>(
+        "numerics.poisson.solver", {{"auto", PoissonMethod::automatic}, {"multigrid", PoissonMethod::multigrid}});
     c.divergence_limit = r.number("numerics.divergence_limit");
 
     c.end_time = r.number("time.end");

@@ -27,8 +27,8 @@ FlowSolver::FlowSolver(const FlowConfig& config, MPI_Comm comm) : config_(config
     bc_ = std::make_unique<BoundaryConditions>(*grid_, config_.boundary);
     std::array<bool, 4> dirichlet{};
     for (Side s : kSides) dirichlet[static_cast<int>(s)] = bc_->pressure_dirichlet(s);
-    poisson_ =
-        std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance, config_.poisson_max_iterations);
+    poisson_ = std::make_unique<PoissonSolver>(*grid_, dirichlet, config_.poisson_tolerance,
+                                               config_.poisson_max_iterations, config_.poisson_method);
     implicit_now_ = config_.diffusion == DiffusionScheme::implicit_euler;
     inverse_h2_max_ = max_inverse_square_spacing(*grid_);
     vel_ = star_ = rhs_ = rhs_old_ = Velocity(*grid_);

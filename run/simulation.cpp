@@ -204,8 +204,12 @@ std::string format_summary(const RunSummary& s, long long cells) {
             std::snprintf(buf, sizeof buf, " %s %.1f %%", stage.c_str(), 100 * seconds / s.wall_seconds);
             o << buf;
             if (stage == "poisson") {
-                std::snprintf(buf, sizeof buf, " (%.1f iterations/step)", s.mean_poisson_iterations);
-                o << buf;
+                if (s.mean_poisson_iterations > 0.0) {
+                    std::snprintf(buf, sizeof buf, " (%.1f iterations/step)", s.mean_poisson_iterations);
+                    o << buf;
+                } else {
+                    o << " (direct)";
+                }
             }
             o << ",";
         }

@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(build-essential cmake libeigen3-dev libhypre-dev libsundials-dev libhdf5-dev libopenmpi-dev
           openmpi-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev libcli11-dev
-          libfccp-dev python3-numpy python3-h5py python3-matplotlib python3-yaml chromium)
+          libfccp-dev libfftw3-dev pkg-config python3-numpy python3-h5py python3-matplotlib python3-yaml chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -22,13 +22,10 @@ void LocalAxis::build(const Axis& axis, int first_cell, int cells) {
     }
 }
 
-namespace {
-// Block distribution of n cells over p ranks: the first n % p ranks get one cell more.
 void block_range(int n, int p, int r, int& first, int& count) {
     count = n / p + (r < n % p ? 1 : 0);
     first = r * (n / p) + std::min(r, n % p);
 }
-}  // namespace
 
 Grid::Grid(Axis x, Axis y, MPI_Comm comm, int ranks_x, int ranks_y) : x_(std::move(x)), y_(std::move(y)) {
     int world = 1;

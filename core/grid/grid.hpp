@@ -44,6 +44,9 @@ private:
     std::vector<double> f_, c_, w_, dc_;
 };
 
+// Block distribution of n cells over p ranks: rank r gets [first, first + count); the first n % p ranks get one more.
+void block_range(int n, int p, int r, int& first, int& count);
+
 class Grid {
 public:
     // ranks_x, ranks_y <= 0: let MPI choose the decomposition.

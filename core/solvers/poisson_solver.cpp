@@ -58,8 +58,12 @@ HYPRE_Int keep_hierarchy(HYPRE_StructSolver, HYPRE_StructMatrix, HYPRE_StructVec
 }  // namespace
 
 PoissonSolver::PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance,
-                             int max_iterations)
-    : grid_(grid), dirichlet_(dirichlet_sides), tolerance_(tolerance), max_iterations_(max_iterations) {
+                             int max_iterations, PoissonMethod method)
+    : grid_(grid),
+      dirichlet_(dirichlet_sides),
+      method_(method),
+      tolerance_(tolerance),
+      max_iterations_(max_iterations) {
     singular_ = !(dirichlet_[0] || dirichlet_[1] || dirichlet_[2] || dirichlet_[3]);
     MPI_Comm comm = grid_.comm();
     lower_ = {grid_.lx().offset, grid_.ly().offset};
@@ -198,7 +202,8 @@ void PoissonSolver::set_values(HYPRE_StructMatrix m) const {
 // hierarchy instead, measured 2026-11-24, took 90 PCG iterations per step on the body-fitted free fall: its setup
 // keeps data derived from the fine matrix.)
 void PoissonSolver::update_coefficients() {
-    if (!matrix_ || !pcg_) return update_matrix();
+    if (direct_ && DirectPoissonSolver::transform_axis(grid_) == direct_->axis()) return direct_->update_lines();
+    if (!matrix_ || !pcg_ || direct_) return update_matrix();
     NullSpace& ns = null_spaces().at(pfmg_);
     if (ns.hierarchy_matrix) {
         // PCG's own matrix already: the same grid and stencil, new values in place (PCG's setup, its vectors and the
@@ -212,11 +217,21 @@ void PoissonSolver::update_coefficients() {
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
 }
 
+bool PoissonSolver::direct_applies() const {
+    return method_ == PoissonMethod::automatic && solid_cells_ == 0.0 &&
+           DirectPoissonSolver::transform_axis(grid_) >= 0;
+}
+
 void PoissonSolver::update_matrix() {
-    HYPRE_StructMatrix fresh = new_matrix();
     destroy_solver();
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
-    matrix_ = fresh;
+    matrix_ = nullptr;
+    direct_.reset();
+    if (direct_applies()) {
+        direct_ = std::make_unique<DirectPoissonSolver>(grid_, dirichlet_);
+        return;
+    }
+    matrix_ = new_matrix();
     HYPRE_StructPCGCreate(grid_.comm(), &pcg_);
     HYPRE_StructPCGSetTol(pcg_, tolerance_);
     HYPRE_StructPCGSetMaxIter(pcg_, max_iterations_);
@@ -259,6 +274,10 @@ void PoissonSolver::update_matrix() {
 }
 
 PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double absolute_tolerance) {
+    if (direct_) {
+        direct_->solve(source, p);
+        return PoissonStats{};
+    }
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     const int nx = grid_.nx(), ny = grid_.ny();

@@ -1,5 +1,7 @@
 #pragma once
-// The pressure Poisson problem of the projection, solved with hypre's structured interface.
+// The pressure Poisson problem of the projection: solved directly (direct_poisson.hpp: a transform along a
+// uniform axis, tridiagonal systems along the other) where the grid allows it, else with hypre's structured
+// interface, as follows.
 //
 // Finite-volume form on cell (i, j) of volume V = w_x(i) w_y(j):
 //   sum over the four faces  A_f (p_nb - p_ij) / d_f  =  V * s_ij
@@ -17,20 +19,24 @@
 #include <HYPRE_struct_ls.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
+#include "direct_poisson.hpp"
 #include "field.hpp"
+#include "poisson_method.hpp"
 
 namespace chute {
 
 struct PoissonStats {
-    int iterations = 0;
-    double relative_residual = 0.0;
+    int iterations = 0;              // 0: a direct solve
+    double relative_residual = 0.0;  // 0 for a direct solve (exact to round-off: ~1e-13, test_poisson_solver.cpp)
 };
 
 class PoissonSolver {
 public:
-    PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance, int max_iterations);
+    PoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides, double tolerance, int max_iterations,
+                  PoissonMethod method = PoissonMethod::automatic);
     ~PoissonSolver();
     PoissonSolver(const PoissonSolver&) = delete;
     PoissonSolver& operator=(const PoissonSolver&) = delete;
@@ -48,6 +54,7 @@ public:
     // absolute_tolerance bounds the residual norm from below (for source ~ 0).
     PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
     bool singular() const { return singular_; }
+    bool direct() const { return direct_ != nullptr; }
 
 private:
     void destroy_solver();
@@ -55,8 +62,12 @@ private:
     HYPRE_StructMatrix new_matrix() const;
     void set_values(HYPRE_StructMatrix m) const;
 
+    bool direct_applies() const;
+
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;
+    PoissonMethod method_;
+    std::unique_ptr<DirectPoissonSolver> direct_;  // null: hypre solves
     bool singular_;
     double tolerance_;
     int max_iterations_;
