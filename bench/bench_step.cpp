@@ -36,6 +36,7 @@
 #include "poisson_solver.hpp"
 #include "projection.hpp"
 #include "time_step_control.hpp"
+#include "triad.hpp"
 
 using namespace chute;
 
@@ -119,7 +120,9 @@ struct PoissonRow {
 
 struct KernelRow {
     std::string name;
-    double seconds = 0;  // best of the repeats, one call
+    double seconds = 0;         // best of the repeats, one call
+    double bytes_per_cell = 0;  // memory traffic model (STREAM counting: each array read or written once, 8 B)
+    int per_step = 0;           // times the part runs in one step (0: not part of FlowSolver::advance())
 };
 
 // Evicts the caches (writes a buffer larger than the last-level cache), so that a kernel timed next reads
@@ -159,15 +162,18 @@ std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
     const int nx = g.nx(), ny = g.ny();
     volatile double sink = 0.0;
     std::vector<KernelRow> rows;
-    auto add = [&](const char* name, const std::function<void()>& f) {
-        rows.push_back({name, best_time(comm, repeats, true, f)});
+    auto add = [&](const char* name, double bytes, int per_step, const std::function<void()>& f) {
+        rows.push_back({name, best_time(comm, repeats, true, f), bytes, per_step});
     };
+    PoissonSolver poisson(g, {false, false, false, false}, c.poisson_tolerance, c.poisson_max_iterations);
+    divergence(g, vel, 1.0 / dt, source);
+    Field2D phi(g);
 
-    add("time_step_limits (next_dt)",
+    add("time_step_limits (next_dt)", 16, 1,
         [&] { sink = time_step_limits(g, vel, c.viscosity, c.cfl, c.diffusion_number).stable(); });
-    add("convection (central)", [&] { convection(g, c.convection, vel, bc.u_first(), bc.v_first(), rhs); });
-    add("add_diffusion", [&] { add_diffusion(g, c.viscosity, vel, bc.u_first(), bc.v_first(), rhs); });
-    add("AB2 update u*", [&] {
+    add("convection (central)", 32, 1, [&] { convection(g, c.convection, vel, bc.u_first(), bc.v_first(), rhs); });
+    add("add_diffusion", 48, 1, [&] { add_diffusion(g, c.viscosity, vel, bc.u_first(), bc.v_first(), rhs); });
+    add("AB2 update u*", 64, 1, [&] {
         for (int j = 0; j < ny; ++j)
             for (int i = bc.u_first(); i < nx; ++i)
                 star.u(i, j) = vel.u(i, j) + 1.5 * dt * rhs.u(i, j) - 0.5 * dt * rhs_old.u(i, j);
@@ -175,12 +181,12 @@ std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
             for (int i = 0; i < nx; ++i)
                 star.v(i, j) = vel.v(i, j) + 1.5 * dt * rhs.v(i, j) - 0.5 * dt * rhs_old.v(i, j);
     });
-    add("set_outflow + halo(u*)", [&] {
+    add("set_outflow + halo(u*)", 0, 1, [&] {
         bc.set_outflow(vel, star, dt);
         halo.exchange(star);
     });
-    add("divergence", [&] { divergence(g, star, 1.0 / dt, source); });
-    add("residual-floor sum", [&] {
+    add("divergence", 24, 1, [&] { divergence(g, star, 1.0 / dt, source); });
+    add("residual-floor sum (multigrid only)", 16, 0, [&] {
         const auto& X = g.lx();
         const auto& Y = g.ly();
         double scale = 0.0;
@@ -193,17 +199,27 @@ std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
         MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPI_DOUBLE, MPI_SUM, comm);
         sink = scale;
     });
-    add("halo(p) + apply_pressure", [&] {
+    add("halo(p) + apply_pressure", 0, 2, [&] {
         halo.exchange(p);
         bc.apply_pressure(p);
     });
-    add("subtract_pressure_gradient", [&] { subtract_pressure_gradient(g, bc, p, dt, star); });
-    add("halo(u) + bc.apply", [&] {
+    add("subtract_pressure_gradient", 40, 2, [&] { subtract_pressure_gradient(g, bc, p, dt, star); });
+    add("halo(u) + bc.apply", 0, 1, [&] {
         halo.exchange(star);
         bc.apply(star);
     });
-    add("kinetic_energy (run loop)", [&] { sink = kinetic_energy(g, vel); });
-    add("max_divergence (run loop)", [&] { sink = max_divergence(g, vel); });
+    add("kinetic_energy (run loop)", 16, 0, [&] { sink = kinetic_energy(g, vel); });
+    add("max_divergence (run loop)", 16, 0, [&] { sink = max_divergence(g, vel); });
+    add("p^{n-1} <- p^n, p += phi", 40, 1, [&] {
+        for (int j = 0; j < ny; ++j)  // two passes, as in the step (pressure_increment_guess, then the correction)
+            for (int i = 0; i < nx; ++i) rhs_old.u(i, j) = p(i, j);
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) p(i, j) += source(i, j);
+    });
+    // The direct solve (one rank): forward transform out of place (8 + 8), the tridiagonal sweeps over blocks of
+    // modes that stay in cache (16), the inverse in place (16). On more ranks the pencil transposes add theirs.
+    add(poisson.direct() ? "Poisson solve (direct)" : "Poisson solve (multigrid)", poisson.direct() ? 48 : 0, 1,
+        [&] { poisson.solve(source, phi); });
     (void)sink;
     return rows;
 }
@@ -258,9 +274,12 @@ int main(int argc, char** argv) {
     }
     if (opt.grids.empty()) opt.grids = {256, 512, 1024};
 
+    const bench::Triad triad_start = bench::measure_triad(MPI_COMM_WORLD);
     if (root) {
         std::printf("Machine: %s, %d cores; %s; load average at start %s\n\n", cpu_model().c_str(), cpu_count(),
                     today().c_str(), load_average().c_str());
+        std::printf("STREAM triad (bench/triad.hpp), %d rank%s at once: %.1f GB/s (%.1f per rank)\n\n", size,
+                    size > 1 ? "s" : "", triad_start.total_gbs, triad_start.per_rank_gbs);
         std::printf(
             "Case: lid-driven cavity, Re 1000, central convection, CFL 0.5, Poisson tol 1e-8; %d warm-up "
             "steps, then >= %d steps and >= %.1f s timed.\n\n",
@@ -369,15 +388,41 @@ int main(int argc, char** argv) {
             const double cells = static_cast<double>(n) * n;
             std::printf("\n### Parts of the step timed one by one from cold caches, %d^2, %d rank%s (best of 5)\n\n", n,
                         size, size > 1 ? "s" : "");
-            std::printf("| part | us / cell |\n|---|---|\n");
-            double total = 0.0;
+            std::printf(
+                "| part | per step | us / cell | bytes / cell (model) | GB/s (all ranks) | of the triad |\n"
+                "|---|---|---|---|---|---|\n");
+            double step_seconds = 0.0, step_bytes = 0.0;
             for (const auto& k : rows) {
-                std::printf("| %s | %.4f |\n", k.name.c_str(), 1e6 * k.seconds / cells);
-                total += k.seconds;
+                const double gbs = k.bytes_per_cell * cells / k.seconds / 1e9;
+                if (k.bytes_per_cell > 0)
+                    std::printf("| %s | %d | %.4f | %.0f | %.1f | %.0f %% |\n", k.name.c_str(), k.per_step,
+                                1e6 * k.seconds / cells, k.bytes_per_cell, gbs, 100 * gbs / triad_start.total_gbs);
+                else
+                    std::printf("| %s | %d | %.4f | - | - | - |\n", k.name.c_str(), k.per_step,
+                                1e6 * k.seconds / cells);
+                step_seconds += k.per_step * k.seconds;
+                step_bytes += k.per_step * k.bytes_per_cell;
             }
-            std::printf("| sum (without the Poisson solve) | %.4f |\n", 1e6 * total / cells);
+            const double limit = step_bytes * cells / (triad_start.total_gbs * 1e9);
+            std::printf(
+                "\nOne step's parts: %.0f bytes per cell; at the triad's %.1f GB/s that is %.4f us / cell, the "
+                "bandwidth limit; the parts take %.4f us / cell (%.1fx the limit)",
+                step_bytes, triad_start.total_gbs, 1e6 * limit / cells, 1e6 * step_seconds / cells,
+                step_seconds / limit);
+            for (const auto& r : steps)
+                if (r.n == n) {
+                    const double per_cell = r.seconds / r.steps;
+                    std::printf("; the whole step, timed above, %.4f us / cell (%.1fx the limit)",
+                                1e6 * per_cell / cells, per_cell / limit);
+                }
+            std::printf(".\n");
         }
         std::printf("\nLoad average at end: %s\n", load_average().c_str());
+    }
+    const bench::Triad triad_end = bench::measure_triad(MPI_COMM_WORLD);
+    if (root) {
+        std::printf("STREAM triad at the end: %.1f GB/s (%.1f per rank)\n", triad_end.total_gbs,
+                    triad_end.per_rank_gbs);
         std::fflush(stdout);
     }
 

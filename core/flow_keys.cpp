@@ -485,7 +485,8 @@ std::vector<CaseKey> flow_keys() {
          .type = K::integer_vector2,
          .default_value = "[0, 0]",
          .min = at_least(0),
-         .meaning = "Number of MPI patches along x and y; 0: chosen automatically."},
+         .meaning = "Number of MPI patches along x and y; 0: chosen automatically (with one uniform axis and the "
+                    "direct Poisson solve, only the other axis is split; else MPI's choice)."},
     };
 }
 

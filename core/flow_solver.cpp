@@ -9,6 +9,7 @@
 #include "convection.hpp"
 #include "diagnostics.hpp"
 #include "diffusion.hpp"
+#include "direct_poisson.hpp"
 #include "line_motion.hpp"
 #include "projection.hpp"
 #include "remap.hpp"
@@ -18,11 +19,27 @@ namespace chute {
 
 Axis build_axis(const AxisConfig& c, bool periodic) { return Axis(axis_lines(c), periodic); }
 
+namespace {
+// The decomposition, where the case leaves it to Chute: with the direct Poisson solve on one uniform axis, the
+// patches split only the other, so that each holds whole lines along the transform (direct_poisson.hpp: two
+// pencil transposes per solve instead of four). Else MPI's choice.
+std::array<int, 2> choose_ranks(const FlowConfig& c, const Axis& x, const Axis& y, MPI_Comm comm) {
+    if (c.ranks[0] > 0 || c.ranks[1] > 0 || c.poisson_method != PoissonMethod::automatic) return c.ranks;
+    int ranks = 1;
+    MPI_Comm_size(comm, &ranks);
+    const bool ux = uniform_axis(x), uy = uniform_axis(y);
+    if (ux && !uy && y.cells() >= kGhost * ranks) return {1, ranks};
+    if (uy && !ux && x.cells() >= kGhost * ranks) return {ranks, 1};
+    return c.ranks;
+}
+}  // namespace
+
 FlowSolver::FlowSolver(const FlowConfig& config, MPI_Comm comm) : config_(config) {
     const bool px = config_.boundary[0].type == BoundaryType::periodic;
     const bool py = config_.boundary[2].type == BoundaryType::periodic;
-    grid_ = std::make_unique<Grid>(build_axis(config_.x, px), build_axis(config_.y, py), comm, config_.ranks[0],
-                                   config_.ranks[1]);
+    Axis x = build_axis(config_.x, px), y = build_axis(config_.y, py);
+    const std::array<int, 2> ranks = choose_ranks(config_, x, y, comm);
+    grid_ = std::make_unique<Grid>(std::move(x), std::move(y), comm, ranks[0], ranks[1]);
     halo_ = std::make_unique<HaloExchange>(*grid_);
     bc_ = std::make_unique<BoundaryConditions>(*grid_, config_.boundary);
     std::array<bool, 4> dirichlet{};
@@ -402,10 +419,12 @@ void FlowSolver::predict_velocity(double dt, double r) {
 
 // Starting guess phi = r (p^n - p^{n-1}), i.e. p^{n+1} guessed as the linear extrapolation: it saves a
 // third of the PCG iterations against phi = 0 (6 -> 4 on the Re 1000 cavity, docs/performance.md).
+// (A direct solve needs no guess: p^n is only kept as p^{n-1}.)
 void FlowSolver::pressure_increment_guess(double r) {
+    const bool guess = !poisson_->direct();
     for (int j = 0; j < grid_->ny(); ++j)
         for (int i = 0; i < grid_->nx(); ++i) {
-            phi_(i, j) = pressure_history_ ? r * (p_(i, j) - p_old_(i, j)) : 0.0;
+            if (guess) phi_(i, j) = pressure_history_ ? r * (p_(i, j) - p_old_(i, j)) : 0.0;
             p_old_(i, j) = p_(i, j);
         }
     pressure_history_ = true;
@@ -415,6 +434,7 @@ void FlowSolver::pressure_increment_guess(double r) {
 // |u| / h, so its rounding error is ~eps |u| / h per cell. Asking for a smaller residual would never stop
 // when the flow is (nearly) at rest; 1e-14 is ~50 eps.
 double FlowSolver::poisson_residual_floor(const Velocity& vel, double dt) const {
+    if (poisson_->direct()) return 0.0;  // no iterations to stop
     const auto& X = grid_->lx();
     const auto& Y = grid_->ly();
     double sum = 0.0;

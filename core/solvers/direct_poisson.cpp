@@ -10,12 +10,8 @@ namespace chute {
 
 namespace {
 
-bool uniform(const Axis& axis) {
-    const double h = axis.length() / axis.cells();
-    for (int k = 0; k < axis.cells(); ++k)
-        if (std::abs(axis.width(k) - h) > 1e-10 * h) return false;
-    return true;
-}
+// Modes solved together in the tridiagonal sweeps (their working set, nd x block doubles, stays in cache).
+constexpr int kModeBlock = 32;
 
 const Axis& axis_of(const Grid& g, int a) { return a == 0 ? g.x_axis() : g.y_axis(); }
 
@@ -43,8 +39,8 @@ CellBox whole_lines(const Grid& g, int along, int rank, int ranks) {
 }
 
 // Thomas' algorithm on x[0, n): a x_{k-1} + b x_k + c x_{k+1} = x (right-hand side in, solution out).
-void thomas(int n, const double* a, const double* b, const double* c, double eigen_term, const double* width,
-            double* x, double* cp) {
+void thomas(int n, const double* a, const double* b, const double* c, double eigen_term, const double* width, double* x,
+            double* cp) {
     double den = b[0] + eigen_term * width[0];
     cp[0] = c[0] / den;
     x[0] /= den;
@@ -58,11 +54,27 @@ void thomas(int n, const double* a, const double* b, const double* c, double eig
 
 }  // namespace
 
+bool uniform_axis(const Axis& axis) {
+    const double h = axis.length() / axis.cells();
+    for (int k = 0; k < axis.cells(); ++k)
+        if (std::abs(axis.width(k) - h) > 1e-10 * h) return false;
+    return true;
+}
+
 int DirectPoissonSolver::transform_axis(const Grid& grid) {
-    const bool ux = uniform(grid.x_axis()), uy = uniform(grid.y_axis());
-    if (ux && uy) return grid.y_axis().periodic() && !grid.x_axis().periodic() ? 1 : 0;
-    if (ux) return 0;
-    if (uy) return 1;
+    const bool ux = uniform_axis(grid.x_axis()), uy = uniform_axis(grid.y_axis());
+    // A periodic axis carrying the tridiagonal systems needs 3 cells for Sherman-Morrison's corners.
+    const bool x_systems_ok = !grid.x_axis().periodic() || grid.global_nx() >= 3;
+    const bool y_systems_ok = !grid.y_axis().periodic() || grid.global_ny() >= 3;
+    if (ux && uy && y_systems_ok && x_systems_ok) {
+        // Both: the one whose lines the patches hold whole (two transposes fewer), then a periodic one (its
+        // systems would be cyclic), else x.
+        const auto split = grid.ranks();
+        if ((split[0] == 1) != (split[1] == 1)) return split[0] == 1 ? 0 : 1;
+        return grid.y_axis().periodic() && !grid.x_axis().periodic() ? 1 : 0;
+    }
+    if (ux && y_systems_ok) return 0;
+    if (uy && x_systems_ok) return 1;
     return -1;
 }
 
@@ -76,62 +88,52 @@ DirectPoissonSolver::DirectPoissonSolver(const Grid& grid, std::array<bool, 4> d
     nd_ = axis_of(grid_, d).cells();
     singular_ = !(dirichlet_[0] || dirichlet_[1] || dirichlet_[2] || dirichlet_[3]);
     cyclic_ = axis_of(grid_, d).periodic();
-
-    // The transform along T and its modes' eigenvalues.
-    const bool low_dirichlet = dirichlet_[static_cast<int>(low_side(t_))];
-    const bool high_dirichlet = dirichlet_[static_cast<int>(high_side(t_))];
-    fftw_r2r_kind forward_kind = FFTW_REDFT10, inverse_kind = FFTW_REDFT01;
-    double shift = 0.0;  // theta_m = pi (m + shift) / N
-    if (T.periodic()) {
-        forward_kind = FFTW_R2HC;
-        inverse_kind = FFTW_HC2R;
-    } else if (low_dirichlet && high_dirichlet) {
-        forward_kind = FFTW_RODFT10;
-        inverse_kind = FFTW_RODFT01;
-        shift = 1.0;
-    } else if (high_dirichlet) {
-        forward_kind = inverse_kind = FFTW_REDFT11;
-        shift = 0.5;
-    } else if (low_dirichlet) {
-        forward_kind = inverse_kind = FFTW_RODFT11;
-        shift = 0.5;
-    }
-    normalisation_ = T.periodic() ? nt_ : 2.0 * nt_;
     h_ = T.length() / nt_;
-    eigenvalue_.resize(nt_);
-    for (int m = 0; m < nt_; ++m) {
-        const double theta = T.periodic() ? 2.0 * std::numbers::pi * std::min(m, nt_ - m) / nt_
-                                          : std::numbers::pi * (m + shift) / nt_;
-        const double s = std::sin(0.5 * theta);
-        eigenvalue_[m] = -4.0 * s * s / (h_ * h_);
-    }
 
-    // The three layouts and the transposes between them.
+    // The layouts. A patch holds whole lines along an axis when the decomposition does not split that axis.
     const int ranks = grid_.size(), rank = grid_.rank();
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     patch_ = BoxStorage{{X.offset, X.offset + X.n, Y.offset, Y.offset + Y.n}, 1, Field2D(grid_).stride()};
-    lines_t_ = lines_along(t_, whole_lines(grid_, t_, rank, ranks));
-    lines_d_ = lines_along(d, whole_lines(grid_, d, rank, ranks));
-    to_t_ = std::make_unique<PencilTranspose>(grid_.comm(), patch_, lines_t_);
-    t_to_d_ = std::make_unique<PencilTranspose>(grid_.comm(), lines_t_, lines_d_);
-    d_to_t_ = std::make_unique<PencilTranspose>(grid_.comm(), lines_d_, lines_t_);
-    from_t_ = std::make_unique<PencilTranspose>(grid_.comm(), lines_t_, patch_);
-    t_data_.assign(static_cast<std::size_t>(lines_t_.box.cells()), 0.0);
-    d_data_.assign(static_cast<std::size_t>(lines_d_.box.cells()), 0.0);
-    scratch_.resize(nd_);
-    if (cyclic_) cyclic_z_.resize(nd_);
-
-    // One plan for all of this rank's lines along T, in place (FFTW_ESTIMATE leaves the data alone).
-    const int lines = static_cast<int>(lines_t_.box.cells() / nt_);
-    if (lines > 0) {
-        int n[1] = {nt_};
-        forward_ = fftw_plan_many_r2r(1, n, lines, t_data_.data(), nullptr, 1, nt_, t_data_.data(), nullptr, 1, nt_,
-                                      &forward_kind, FFTW_ESTIMATE);
-        inverse_ = fftw_plan_many_r2r(1, n, lines, t_data_.data(), nullptr, 1, nt_, t_data_.data(), nullptr, 1, nt_,
-                                      &inverse_kind, FFTW_ESTIMATE);
-        if (!forward_ || !inverse_) throw std::runtime_error("DirectPoissonSolver: FFTW could not plan the transform");
+    const auto split = grid_.ranks();
+    if (split[t_] == 1)
+        transform_ = {patch_, true};
+    else
+        transform_ = {lines_along(t_, whole_lines(grid_, t_, rank, ranks)), false};
+    if (split[d] == 1) {
+        systems_ = {patch_, true};
+    } else {
+        // Modes contiguous: the systems' sweeps along d run over neighbouring modes together.
+        systems_ = {lines_along(t_, whole_lines(grid_, d, rank, ranks)), false};
     }
+    if (!transform_.in_patch) {
+        transform_data_.assign(static_cast<std::size_t>(transform_.storage.box.cells()), 0.0);
+        patch_to_transform_ = std::make_unique<PencilTranspose>(grid_.comm(), patch_, transform_.storage);
+        transform_to_patch_ = std::make_unique<PencilTranspose>(grid_.comm(), transform_.storage, patch_);
+    }
+    if (!(transform_.in_patch && systems_.in_patch)) {
+        if (!systems_.in_patch) systems_data_.assign(static_cast<std::size_t>(systems_.storage.box.cells()), 0.0);
+        transform_to_systems_ = std::make_unique<PencilTranspose>(grid_.comm(), transform_.storage, systems_.storage);
+        systems_to_transform_ = std::make_unique<PencilTranspose>(grid_.comm(), systems_.storage, transform_.storage);
+    }
+    scratch_.resize(static_cast<std::size_t>(nd_) * kModeBlock);
+
+    // The modes' eigenvalues along T.
+    const bool low_dirichlet = dirichlet_[static_cast<int>(low_side(t_))];
+    const bool high_dirichlet = dirichlet_[static_cast<int>(high_side(t_))];
+    const double shift = T.periodic()                      ? 0.0
+                         : low_dirichlet && high_dirichlet ? 1.0
+                         : low_dirichlet || high_dirichlet ? 0.5
+                                                           : 0.0;
+    normalisation_ = T.periodic() ? nt_ : 2.0 * nt_;
+    eigenvalue_.resize(nt_);
+    for (int m = 0; m < nt_; ++m) {
+        const double theta =
+            T.periodic() ? 2.0 * std::numbers::pi * std::min(m, nt_ - m) / nt_ : std::numbers::pi * (m + shift) / nt_;
+        const double s = std::sin(0.5 * theta);
+        eigenvalue_[m] = -4.0 * s * s / (h_ * h_);
+    }
+    plan_transforms();
     update_lines();
 }
 
@@ -140,11 +142,53 @@ DirectPoissonSolver::~DirectPoissonSolver() {
     if (inverse_) fftw_destroy_plan(inverse_);
 }
 
+// One plan each way for all of this rank's lines along T. The forward transform reads the source and writes the
+// transform's layout (out of place when that is p); the inverse works in place. FFTW_ESTIMATE plans without
+// touching the arrays; FFTW_UNALIGNED lets the plans run on the solve's own fields.
+void DirectPoissonSolver::plan_transforms() {
+    const bool low_dirichlet = dirichlet_[static_cast<int>(low_side(t_))];
+    const bool high_dirichlet = dirichlet_[static_cast<int>(high_side(t_))];
+    fftw_r2r_kind forward_kind = FFTW_REDFT10, inverse_kind = FFTW_REDFT01;
+    if (axis_of(grid_, t_).periodic()) {
+        forward_kind = FFTW_R2HC;
+        inverse_kind = FFTW_HC2R;
+    } else if (low_dirichlet && high_dirichlet) {
+        forward_kind = FFTW_RODFT10;
+        inverse_kind = FFTW_RODFT01;
+    } else if (high_dirichlet) {
+        forward_kind = inverse_kind = FFTW_REDFT11;
+    } else if (low_dirichlet) {
+        forward_kind = inverse_kind = FFTW_RODFT11;
+    }
+    const BoxStorage& L = transform_.storage;
+    const int lines = static_cast<int>(L.box.cells() / nt_);
+    if (lines == 0) return;
+    const int stride = static_cast<int>(t_ == 0 ? L.si : L.sj), distance = static_cast<int>(t_ == 0 ? L.sj : L.si);
+    int n[1] = {nt_};
+    const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+    if (transform_.in_patch) {
+        Field2D in(grid_), out(grid_);
+        forward_ = fftw_plan_many_r2r(1, n, lines, in.origin(), nullptr, stride, distance, out.origin(), nullptr,
+                                      stride, distance, &forward_kind, flags | FFTW_PRESERVE_INPUT);
+        inverse_ = fftw_plan_many_r2r(1, n, lines, out.origin(), nullptr, stride, distance, out.origin(), nullptr,
+                                      stride, distance, &inverse_kind, flags);
+    } else {
+        double* data = transform_data_.data();
+        forward_ = fftw_plan_many_r2r(1, n, lines, data, nullptr, stride, distance, data, nullptr, stride, distance,
+                                      &forward_kind, flags);
+        inverse_ = fftw_plan_many_r2r(1, n, lines, data, nullptr, stride, distance, data, nullptr, stride, distance,
+                                      &inverse_kind, flags);
+    }
+    if (!forward_ || !inverse_) throw std::runtime_error("DirectPoissonSolver: FFTW could not plan the transforms");
+}
+
 void DirectPoissonSolver::update_lines() {
-    if (transform_axis(grid_) != t_) throw std::logic_error("DirectPoissonSolver: the transform axis is no longer uniform");
-    // Row k of the D-direction operator times h_T (poisson_solver.hpp's finite-volume form divided by h_T):
-    //   (p_{k+1} - p_k) / dc_{k+1} - (p_k - p_{k-1}) / dc_k + w_k lambda_m p_k = h_T^-1 V_k s_k
+    if (transform_axis(grid_) != t_)
+        throw std::logic_error("DirectPoissonSolver: the transform axis is no longer uniform");
+    // Row k of the D-direction operator (poisson_solver.hpp's finite-volume form divided by h_T), for mode m:
+    //   (p_{k+1} - p_k) / dc_{k+1} - (p_k - p_{k-1}) / dc_k + w_k lambda_m p_k = h_T^-1 V_k s_k = w_k s_k
     // dc across a boundary face is the distance to the mirrored ghost (a Dirichlet face: ghost -p, twice the flux).
+    // The right-hand side also carries the transforms' normalisation, so the inverse transform gives p.
     const int d = 1 - t_;
     const Axis& D = axis_of(grid_, d);
     const bool low_dirichlet = dirichlet_[static_cast<int>(low_side(d))];
@@ -153,6 +197,7 @@ void DirectPoissonSolver::update_lines() {
     upper_.assign(nd_, 0.0);
     diagonal_.assign(nd_, 0.0);
     width_.assign(nd_, 0.0);
+    rhs_scale_.assign(nd_, 0.0);
     for (int k = 0; k < nd_; ++k) {
         const double a = 1.0 / (D.centre(k) - D.centre(k - 1)), c = 1.0 / (D.centre(k + 1) - D.centre(k));
         const bool first = k == 0 && !cyclic_, last = k == nd_ - 1 && !cyclic_;
@@ -160,95 +205,142 @@ void DirectPoissonSolver::update_lines() {
         upper_[k] = last ? 0.0 : c;
         diagonal_[k] = -((first ? (low_dirichlet ? 2.0 * a : 0.0) : a) + (last ? (high_dirichlet ? 2.0 * c : 0.0) : c));
         width_[k] = D.width(k);
+        rhs_scale_[k] = width_[k] / normalisation_;
+    }
+    if (cyclic_) prepare_cyclic();
+}
+
+// Periodic systems by Sherman-Morrison (Press et al., Numerical Recipes, 2.7): A = T + u v^T with corners
+// A[0][n-1] = beta = lower_0 and A[n-1][0] = alpha = upper_{n-1}; T has b_0 - gamma and b_{n-1} - alpha beta / gamma
+// on its diagonal (gamma = -b_0), u = (gamma, 0, .., alpha), v = (1, 0, .., beta / gamma). Then
+// x = y - z (v.y) / (1 + v.z) with T y = rhs, T z = u; z depends on the mode alone, so it is made here once.
+void DirectPoissonSolver::prepare_cyclic() {
+    const BoxStorage& L = systems_.storage;
+    const int modes = static_cast<int>(L.box.cells() / nd_), first_mode = t_ == 0 ? L.box.i0 : L.box.j0;
+    const int n = nd_;
+    const double alpha = upper_[n - 1], beta = lower_[0];
+    cyclic_gamma_.assign(modes, 0.0);
+    cyclic_inverse_.assign(modes, 0.0);
+    cyclic_z_.assign(static_cast<std::size_t>(modes) * n, 0.0);
+    std::vector<double> b(diagonal_);
+    for (int l = 0; l < modes; ++l) {
+        const double lambda = eigenvalue_[first_mode + l];
+        const double gamma = -(diagonal_[0] + lambda * width_[0]);
+        b[0] = diagonal_[0] - gamma;
+        b[n - 1] = diagonal_[n - 1] - alpha * beta / gamma;
+        double* z = cyclic_z_.data() + static_cast<std::size_t>(l) * n;
+        z[0] = gamma;
+        z[n - 1] = alpha;
+        thomas(n, lower_.data(), b.data(), upper_.data(), lambda, width_.data(), z, scratch_.data());
+        cyclic_gamma_[l] = gamma;
+        cyclic_inverse_[l] = 1.0 / (1.0 + z[0] + beta * z[n - 1] / gamma);
     }
 }
 
 void DirectPoissonSolver::solve(const Field2D& source, Field2D& p) {
-    // 1. The source, on whole lines along T, times the cell volume (h_T w_D): the finite-volume right-hand side.
-    to_t_->run(source.origin(), t_data_.data());
-    const int d = 1 - t_;
-    const Axis& D = axis_of(grid_, d);
-    const int lines = static_cast<int>(lines_t_.box.cells() / nt_);
-    const int first_line = d == 0 ? lines_t_.box.i0 : lines_t_.box.j0;
-    double sum = 0.0;
-    for (int l = 0; l < lines; ++l) {
-        double* line = t_data_.data() + static_cast<std::size_t>(l) * nt_;
-        const double volume = h_ * D.width(first_line + l);
-        for (int m = 0; m < nt_; ++m) {
-            line[m] *= volume;
-            sum += line[m];
-        }
+    // 1. Transform the source along T (into p, or into whole lines after a transpose).
+    double* lines_t = transform_.in_patch ? p.origin() : transform_data_.data();
+    if (transform_.in_patch) {
+        if (forward_) fftw_execute_r2r(forward_, const_cast<double*>(source.origin()), lines_t);
+    } else {
+        patch_to_transform_->run(source.origin(), lines_t);
+        if (forward_) fftw_execute_r2r(forward_, lines_t, lines_t);
     }
-    if (singular_) {  // compatibility: the Neumann problem takes only zero-sum right-hand sides
-        MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());
-        const double mean = sum / static_cast<double>(grid_.global_cells());
-        for (double& v : t_data_) v -= mean;
-    }
-
-    // 2. Transform, solve each mode's tridiagonal system along D, transform back.
-    if (forward_) fftw_execute(forward_);
-    t_to_d_->run(t_data_.data(), d_data_.data());
-    solve_lines();
-    d_to_t_->run(d_data_.data(), t_data_.data());
-    if (inverse_) fftw_execute(inverse_);
-
-    // 3. Scale (the transforms' normalisation and the 1/h_T of the rows), remove the mean, back to the patch.
-    const double scale = 1.0 / (h_ * normalisation_);
-    double mean = 0.0;
-    if (singular_) {
-        double local = 0.0;
-        for (double v : t_data_) local += v;
-        MPI_Allreduce(&local, &mean, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());
-        mean /= static_cast<double>(grid_.global_cells());
-    }
-    for (double& v : t_data_) v = (v - mean) * scale;
-    from_t_->run(t_data_.data(), p.origin());
+    // 2. Each mode's tridiagonal system along D.
+    double* lines_d = systems_.in_patch ? p.origin() : systems_data_.data();
+    if (transform_to_systems_) transform_to_systems_->run(lines_t, lines_d);
+    solve_modes(lines_d, systems_.storage);
+    if (systems_to_transform_) systems_to_transform_->run(lines_d, lines_t);
+    // 3. Back along T.
+    if (inverse_) fftw_execute_r2r(inverse_, lines_t, lines_t);
+    if (!transform_.in_patch) transform_to_patch_->run(lines_t, p.origin());
 }
 
-void DirectPoissonSolver::solve_lines() {
-    const int modes = static_cast<int>(lines_d_.box.cells() / nd_);
-    const int first_mode = t_ == 0 ? lines_d_.box.i0 : lines_d_.box.j0;
-    for (int l = 0; l < modes; ++l) {
-        const int m = first_mode + l;
-        double* x = d_data_.data() + static_cast<std::size_t>(l) * nd_;
-        const double lambda = eigenvalue_[m];
-        if (singular_ && m == 0) {
-            // The null space: pin x_0 = 0 and solve the rows 1 .. n-1 (row 0 then holds by compatibility).
-            x[0] = 0.0;
-            if (nd_ > 1) {
-                const double a1 = lower_[1];
-                lower_[1] = 0.0;  // x_0 = 0 drops out of row 1 (and, periodic, out of row n-1: thomas ignores it)
-                thomas(nd_ - 1, lower_.data() + 1, diagonal_.data() + 1, upper_.data() + 1, lambda, width_.data() + 1,
-                       x + 1, scratch_.data());
-                lower_[1] = a1;
-            }
-            continue;
-        }
-        if (!cyclic_ || nd_ < 3) {
-            thomas(nd_, lower_.data(), diagonal_.data(), upper_.data(), lambda, width_.data(), x, scratch_.data());
-            continue;
-        }
-        // Periodic: Sherman-Morrison on the cyclic system (Press et al., Numerical Recipes, 2.7). Corners:
-        // A[0][n-1] = lower_[0] (beta), A[n-1][0] = upper_[n-1] (alpha).
-        const int n = nd_;
-        const double alpha = upper_[n - 1], beta = lower_[0];
-        const double b0 = diagonal_[0] + lambda * width_[0];
-        const double gamma = -b0;
-        // The modified diagonal, b_0 - gamma and b_{n-1} - alpha beta / gamma (thomas() never reads the corners).
-        std::vector<double>& z = cyclic_z_;
-        const double save0 = diagonal_[0], save_last = diagonal_[n - 1];
-        diagonal_[0] -= gamma;
-        diagonal_[n - 1] -= alpha * beta / gamma;
-        thomas(n, lower_.data(), diagonal_.data(), upper_.data(), lambda, width_.data(), x, scratch_.data());
-        std::fill(z.begin(), z.end(), 0.0);
-        z[0] = gamma;
-        z[n - 1] = alpha;
-        thomas(n, lower_.data(), diagonal_.data(), upper_.data(), lambda, width_.data(), z.data(), scratch_.data());
-        diagonal_[0] = save0;
-        diagonal_[n - 1] = save_last;
-        const double factor = (x[0] + beta * x[n - 1] / gamma) / (1.0 + z[0] + beta * z[n - 1] / gamma);
-        for (int k = 0; k < n; ++k) x[k] -= factor * z[k];
+void DirectPoissonSolver::solve_modes(double* data, const BoxStorage& L) {
+    const int modes = static_cast<int>(L.box.cells() / nd_), first_mode = t_ == 0 ? L.box.i0 : L.box.j0;
+    const std::ptrdiff_t sm = t_ == 0 ? L.si : L.sj, sk = t_ == 0 ? L.sj : L.si;
+    int l_begin = 0;
+    if (singular_ && first_mode == 0 && modes > 0) {
+        solve_null_mode(data, sk);
+        l_begin = 1;
     }
+    const double* a = lower_.data();
+    const double* c = upper_.data();
+    const double* w = width_.data();
+    const double* r = rhs_scale_.data();
+    const int n = nd_;
+    // Thomas' algorithm on a block of neighbouring modes at once: the sweeps along k run over the block's modes
+    // in the inner loop (contiguous when modes are, so it vectorises; independent chains either way).
+    for (int l0 = l_begin; l0 < modes; l0 += kModeBlock) {
+        const int count = std::min(kModeBlock, modes - l0);
+        const double* lambda = eigenvalue_.data() + first_mode + l0;
+        double* base = data + l0 * sm;
+        double* cp = scratch_.data();
+        for (int k = 0; k < n; ++k) {
+            double b = diagonal_[k];
+            double* x = base + k * sk;
+            double* cpk = cp + static_cast<std::size_t>(k) * count;
+            if (k == 0) {
+                for (int q = 0; q < count; ++q) {
+                    double den = b + lambda[q] * w[0];
+                    if (cyclic_) den -= cyclic_gamma_[l0 + q];
+                    const double inv = 1.0 / den;
+                    cpk[q] = c[0] * inv;
+                    x[q * sm] = x[q * sm] * r[0] * inv;
+                }
+                continue;
+            }
+            const double* xp = x - sk;
+            const double* cpp = cpk - count;
+            const bool last_cyclic = cyclic_ && k == n - 1;
+            for (int q = 0; q < count; ++q) {
+                double den = b + lambda[q] * w[k] - a[k] * cpp[q];
+                if (last_cyclic) den -= upper_[n - 1] * lower_[0] / cyclic_gamma_[l0 + q];
+                const double inv = 1.0 / den;
+                cpk[q] = c[k] * inv;
+                x[q * sm] = (x[q * sm] * r[k] - a[k] * xp[q * sm]) * inv;
+            }
+        }
+        for (int k = n - 2; k >= 0; --k) {
+            double* x = base + k * sk;
+            const double* cpk = cp + static_cast<std::size_t>(k) * count;
+            for (int q = 0; q < count; ++q) x[q * sm] -= cpk[q] * x[q * sm + sk];
+        }
+        if (!cyclic_) continue;
+        const double beta = lower_[0];
+        for (int q = 0; q < count; ++q) {
+            const int l = l0 + q;
+            double* x = base + q * sm;
+            const double* z = cyclic_z_.data() + static_cast<std::size_t>(l) * n;
+            const double factor = (x[0] + beta * x[(n - 1) * sk] / cyclic_gamma_[l]) * cyclic_inverse_[l];
+            for (int k = 0; k < n; ++k) x[k * sk] -= factor * z[k];
+        }
+    }
+}
+
+// Mode 0 of the singular (all-Neumann or periodic) problem. Its right-hand side's sum is the source's total,
+// which the problem cannot take: it is spread evenly over the cells (the mean is removed, as PoissonSolver's
+// hypre path does). Then x_0 = 0 pins the constant, the rows 1 .. n-1 are solved, and the solution's mean
+// removed: this mode carries p's whole mean (the others' sums over T vanish).
+void DirectPoissonSolver::solve_null_mode(double* x, std::ptrdiff_t stride) {
+    std::vector<double> line(nd_);
+    double sum = 0.0;
+    for (int k = 0; k < nd_; ++k) sum += (line[k] = x[k * stride] * rhs_scale_[k]);
+    // Minus the mean right-hand side per cell, h_T^-1 sum(V s) / cells, is minus sum / nd_ on this line.
+    const double mean = sum / nd_;
+    for (int k = 0; k < nd_; ++k) line[k] -= mean;
+    line[0] = 0.0;
+    if (nd_ > 1) {
+        const double a1 = lower_[1];
+        lower_[1] = 0.0;  // x_0 = 0 drops out of row 1 (and, periodic, out of row n-1: thomas() ignores it)
+        thomas(nd_ - 1, lower_.data() + 1, diagonal_.data() + 1, upper_.data() + 1, eigenvalue_[0], width_.data() + 1,
+               line.data() + 1, scratch_.data());
+        lower_[1] = a1;
+    }
+    double solution_mean = 0.0;
+    for (double v : line) solution_mean += v;
+    solution_mean /= nd_;
+    for (int k = 0; k < nd_; ++k) x[k * stride] = line[k] - solution_mean;
 }
 
 }  // namespace chute

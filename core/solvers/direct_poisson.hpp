@@ -26,10 +26,13 @@ struct fftw_plan_s;
 
 namespace chute {
 
+// All cells of the axis equally wide (to 1e-10 relative): a transform can run along it.
+bool uniform_axis(const Axis& axis);
+
 class DirectPoissonSolver {
 public:
     // The axis (0: x, 1: y) the transform would run along on this grid, or -1 if none: neither axis uniform.
-    // Prefers a periodic uniform axis (the other's systems are then not cyclic), else x.
+    // Of two uniform axes: the one the decomposition does not split, else a periodic one, else x.
     static int transform_axis(const Grid& grid);
 
     DirectPoissonSolver(const Grid& grid, std::array<bool, 4> dirichlet_sides);
@@ -45,25 +48,40 @@ public:
     void solve(const Field2D& source, Field2D& p);
 
 private:
-    void solve_lines();  // the tridiagonal systems of this rank's modes (d_)
+    // Where the data sit while they are transformed (whole lines along the transform axis) and while the
+    // tridiagonal systems are solved (whole lines along the other): in p itself when the rank's patch already
+    // holds such lines (one rank: both, no copy at all), else in a buffer the pencil transposes fill.
+    struct Layout {
+        BoxStorage storage;
+        bool in_patch = false;
+    };
+    void plan_transforms();
+    void prepare_cyclic();  // the Sherman-Morrison vectors of the periodic systems
+    // The tridiagonal systems of the modes in `layout`, right-hand sides in, solutions out.
+    void solve_modes(double* data, const BoxStorage& layout);
+    void solve_null_mode(double* x, std::ptrdiff_t stride);  // mode 0 of the singular problem
 
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;
-    int t_ = 0;             // transform axis (0: x, 1: y); the other, d = 1 - t_, carries the tridiagonal systems
-    int nt_ = 0, nd_ = 0;   // global cells along each
-    bool singular_ = false; // no Dirichlet side: mode 0 is the Neumann (or periodic) problem's null space
-    bool cyclic_ = false;   // the tridiagonal axis is periodic
-    double h_ = 0.0;        // cell width along the transform axis
+    int t_ = 0;                   // transform axis (0: x, 1: y); the other, d = 1 - t_, carries the tridiagonal systems
+    int nt_ = 0, nd_ = 0;         // global cells along each
+    bool singular_ = false;       // no Dirichlet side: mode 0 is the Neumann (or periodic) problem's null space
+    bool cyclic_ = false;         // the tridiagonal axis is periodic
+    double h_ = 0.0;              // cell width along the transform axis
     double normalisation_ = 1.0;  // the forward and inverse transforms multiply by this
     std::vector<double> eigenvalue_;  // per mode (global index along the transform axis)
     // Tridiagonal coefficients per cell along the other axis (global index): lower, upper, diagonal without the
-    // mode's term, and the cell width that multiplies the mode's eigenvalue.
-    std::vector<double> lower_, upper_, diagonal_, width_;
-    std::vector<double> scratch_, cyclic_z_;
+    // mode's term, the cell width that multiplies the mode's eigenvalue, and the right-hand side's factor.
+    std::vector<double> lower_, upper_, diagonal_, width_, rhs_scale_;
+    std::vector<double> scratch_;
+    // Periodic systems, per mode of this rank: gamma, 1 / (1 + z_0 + beta z_{n-1} / gamma), and z (nd_ each).
+    std::vector<double> cyclic_gamma_, cyclic_inverse_, cyclic_z_;
 
-    BoxStorage patch_, lines_t_, lines_d_;  // this rank's patch, transform-axis lines, other-axis lines
-    std::unique_ptr<PencilTranspose> to_t_, t_to_d_, d_to_t_, from_t_;
-    std::vector<double> t_data_, d_data_;
+    BoxStorage patch_;
+    Layout transform_, systems_;
+    std::unique_ptr<PencilTranspose> patch_to_transform_, transform_to_systems_, systems_to_transform_,
+        transform_to_patch_;
+    std::vector<double> transform_data_, systems_data_;
     fftw_plan_s *forward_ = nullptr, *inverse_ = nullptr;
 };
 

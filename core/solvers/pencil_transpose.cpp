@@ -71,22 +71,25 @@ PencilTranspose::PencilTranspose(MPI_Comm comm, const BoxStorage& from, const Bo
 }
 
 void PencilTranspose::run(const double* from, double* to) {
-    for_cells(self_, [&](int i, int j) { return from[at(from_, i, j)]; },
-              [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
+    for_cells(
+        self_, [&](int i, int j) { return from[at(from_, i, j)]; },
+        [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
     if (alone_) return;
     for (const Block& b : sends_) {
         double* out = send_buffer_.data() + b.offset;
         const int width = b.box.i1 - b.box.i0;
-        for_cells(b.box, [&](int i, int j) { return from[at(from_, i, j)]; },
-                  [&](int i, int j, double v) { out[(j - b.box.j0) * width + (i - b.box.i0)] = v; });
+        for_cells(
+            b.box, [&](int i, int j) { return from[at(from_, i, j)]; },
+            [&](int i, int j, double v) { out[(j - b.box.j0) * width + (i - b.box.i0)] = v; });
     }
     MPI_Alltoallv(send_buffer_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
                   receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
     for (const Block& b : receives_) {
         const double* in = receive_buffer_.data() + b.offset;
         const int width = b.box.i1 - b.box.i0;
-        for_cells(b.box, [&](int i, int j) { return in[(j - b.box.j0) * width + (i - b.box.i0)]; },
-                  [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
+        for_cells(
+            b.box, [&](int i, int j) { return in[(j - b.box.j0) * width + (i - b.box.i0)]; },
+            [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
     }
 }
 

@@ -117,8 +117,8 @@ TEST(DirectPoisson, ExactOnEveryBoundaryKindAndDecomposition) {
     std::vector<std::array<int, 2>> layouts = {{0, 0}};
     if (n == 2) layouts = {{2, 1}, {1, 2}};
     for (const auto& l : layouts)
-        for (const std::string sides : {"NNNN", "NDNN", "DNNN", "DDNN", "NNND", "NNDN", "NNDD", "PPNN", "NNPP", "PPDN",
-                                        "DNPP", "PPPP"})
+        for (const std::string sides :
+             {"NNNN", "NDNN", "DNNN", "DDNN", "NNND", "NNDN", "NNDD", "PPNN", "NNPP", "PPDN", "DNPP", "PPPP"})
             for (int stretch = 0; stretch < 3; ++stretch) {
                 Problem pr{sides, stretch == 1, stretch == 2, l[0], l[1]};
                 // A periodic axis is never stretched here (the periodic images of tanh lines jump in width).
