@@ -106,6 +106,18 @@ std::vector<CaseKey> body_keys() {
                     "study's mesh modifiers, band/layers.hpp): the domain and its walls stay put, and the body can "
                     "travel any distance the domain holds. `layers` needs cells of the far-field width (spacing "
                     "clustered with `max`) between the window and the domain's ends."},
+        {.path = "bodies.<body>.follow",
+         .type = K::choice,
+         .default_value = "none",
+         .choices = {"none", "x", "y", "xy"},
+         .when_key = "carrier",
+         .when_values = {"immersed"},
+         .meaning = "The grid follows this moving body along these axes (a frame that follows the block, "
+                    "run/following_frame.hpp): the whole grid translates with the body's velocity, the convective "
+                    "fluxes see the velocity relative to it, and the domain is a window around the body (its "
+                    "boundaries move too: an `inflow` at velocity [0, 0] is the water at rest ahead, an `outflow` "
+                    "lets the wake out behind; no walls across the motion). Velocities, positions and fields stay "
+                    "in the inertial frame. One body at most."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "
@@ -269,6 +281,10 @@ std::vector<BodyConfig> read_bodies(const CaseReader& r, double plane_reference_
             p + ".carrier", {{"immersed", CarrierKind::immersed}, {"body_fitted", CarrierKind::body_fitted}});
         if (b.carrier == CarrierKind::body_fitted)
             b.layers = r.choice<bool>(p + ".grid_motion", {{"translate", false}, {"layers", true}});
+        else
+            b.follow = r.choice<std::array<bool, 2>>(
+                p + ".follow",
+                {{"none", {false, false}}, {"x", {true, false}}, {"y", {false, true}}, {"xy", {true, true}}});
         const bool closed =
             b.shape == BodyShape::circle || b.shape == BodyShape::rectangle || b.shape == BodyShape::polygon;
         // The height: the extent across x, the default reference length.
@@ -340,6 +356,8 @@ std::vector<BodyConfig> read_bodies(const CaseReader& r, double plane_reference_
         } else if (r.present(p + ".density")) {
             r.fail(p + ".density", "only free bodies (motion type `free`) have a density");
         }
+        if ((b.follow[0] || b.follow[1]) && b.motion.type == MotionType::fixed)
+            r.fail(p + ".follow", "the body is fixed: the grid has nothing to follow");
 
         b.reference_velocity = r.number(p + ".reference.velocity");
         b.reference_length = r.present(p + ".reference.length") ? r.number(p + ".reference.length") : height;

@@ -44,7 +44,8 @@ Model::Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier
       flow_(std::make_unique<FlowSolver>(config_, comm)),
       bodies_(bodies_of(config_)),
       carrier_(make_carrier(carrier.empty() ? carrier_of(config_) : carrier, flow_->grid(), config_, bodies_)),
-      free_(std::make_unique<FreeBodies>(free_body_settings(config_), bodies_, *carrier_)) {
+      free_(std::make_unique<FreeBodies>(free_body_settings(config_), bodies_, *carrier_)),
+      frame_(FollowingFrame::of(config_)) {
     if (const SolidCells* solid = carrier_->solid_cells()) flow_->set_solid_cells(solid);
     carrier_->attach(*flow_);
     if (config_.turbulence.model == TurbulenceModelType::k_epsilon)

@@ -11,6 +11,7 @@
 #include "carrier.hpp"
 #include "case_config.hpp"
 #include "flow_solver.hpp"
+#include "following_frame.hpp"
 #include "free_bodies.hpp"
 #include "k_epsilon.hpp"
 
@@ -39,6 +40,8 @@ public:
     const FreeBodies& free_bodies() const { return *free_; }
     KEpsilon* turbulence() { return turbulence_.get(); }
     const KEpsilon* turbulence() const { return turbulence_.get(); }
+    // The grid following a body (bodies.<body>.follow), null if it stays.
+    FollowingFrame* following_frame() { return frame_ ? &*frame_ : nullptr; }
 
 private:
     CaseConfig config_;
@@ -47,6 +50,7 @@ private:
     std::unique_ptr<Carrier> carrier_;
     std::unique_ptr<FreeBodies> free_;
     std::unique_ptr<KEpsilon> turbulence_;
+    std::optional<FollowingFrame> frame_;
 };
 
 }  // namespace chute

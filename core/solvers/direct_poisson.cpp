@@ -100,12 +100,12 @@ DirectPoissonSolver::DirectPoissonSolver(const Grid& grid, std::array<bool, 4> d
         transform_ = {patch_, true};
     else
         transform_ = {lines_along(t_, whole_lines(grid_, t_, rank, ranks)), false};
-    if (split[d] == 1) {
+    // Stored x-fastest like the patch, so that the transposes copy whole runs of cells (along x the systems' sweeps
+    // then run over neighbouring modes contiguously, along y over modes a row apart: independent chains either way).
+    if (split[d] == 1)
         systems_ = {patch_, true};
-    } else {
-        // Modes contiguous: the systems' sweeps along d run over neighbouring modes together.
-        systems_ = {lines_along(t_, whole_lines(grid_, d, rank, ranks)), false};
-    }
+    else
+        systems_ = {lines_along(0, whole_lines(grid_, d, rank, ranks)), false};
     if (!transform_.in_patch) {
         transform_data_.assign(static_cast<std::size_t>(transform_.storage.box.cells()), 0.0);
         patch_to_transform_ = std::make_unique<PencilTranspose>(grid_.comm(), patch_, transform_.storage);
@@ -165,7 +165,7 @@ void DirectPoissonSolver::plan_transforms() {
     if (lines == 0) return;
     const int stride = static_cast<int>(t_ == 0 ? L.si : L.sj), distance = static_cast<int>(t_ == 0 ? L.sj : L.si);
     int n[1] = {nt_};
-    const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+    const unsigned flags = FFTW_MEASURE | FFTW_UNALIGNED;
     if (transform_.in_patch) {
         Field2D in(grid_), out(grid_);
         forward_ = fftw_plan_many_r2r(1, n, lines, in.origin(), nullptr, stride, distance, out.origin(), nullptr,

@@ -22,14 +22,22 @@ std::vector<CellBox> all_boxes(MPI_Comm comm, const CellBox& mine) {
     return boxes;
 }
 
-// Copy the cells of `box` between two storages (either may be a contiguous buffer in (j, i) order).
-template <class Read, class Write>
-void for_cells(const CellBox& box, Read read, Write write) {
-    for (int j = box.j0; j < box.j1; ++j)
-        for (int i = box.i0; i < box.i1; ++i) write(i, j, read(i, j));
-}
-
 std::ptrdiff_t at(const BoxStorage& s, int i, int j) { return (i - s.box.i0) * s.si + (j - s.box.j0) * s.sj; }
+
+// Copy the cells of `box` from one storage to another; runs along x are copied whole where both store x fastest.
+void copy_cells(const CellBox& box, const double* from, const BoxStorage& fs, double* to, const BoxStorage& ts) {
+    const int width = box.i1 - box.i0;
+    if (width <= 0) return;
+    for (int j = box.j0; j < box.j1; ++j) {
+        const double* in = from + at(fs, box.i0, j);
+        double* out = to + at(ts, box.i0, j);
+        if (fs.si == 1 && ts.si == 1) {
+            std::copy(in, in + width, out);
+        } else {
+            for (int k = 0; k < width; ++k) out[k * ts.si] = in[k * fs.si];
+        }
+    }
+}
 
 }  // namespace
 
@@ -71,26 +79,14 @@ PencilTranspose::PencilTranspose(MPI_Comm comm, const BoxStorage& from, const Bo
 }
 
 void PencilTranspose::run(const double* from, double* to) {
-    for_cells(
-        self_, [&](int i, int j) { return from[at(from_, i, j)]; },
-        [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
+    copy_cells(self_, from, from_, to, to_);
     if (alone_) return;
-    for (const Block& b : sends_) {
-        double* out = send_buffer_.data() + b.offset;
-        const int width = b.box.i1 - b.box.i0;
-        for_cells(
-            b.box, [&](int i, int j) { return from[at(from_, i, j)]; },
-            [&](int i, int j, double v) { out[(j - b.box.j0) * width + (i - b.box.i0)] = v; });
-    }
+    for (const Block& b : sends_)  // the buffer holds each block x fastest
+        copy_cells(b.box, from, from_, send_buffer_.data() + b.offset, BoxStorage{b.box, 1, b.box.i1 - b.box.i0});
     MPI_Alltoallv(send_buffer_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
                   receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
-    for (const Block& b : receives_) {
-        const double* in = receive_buffer_.data() + b.offset;
-        const int width = b.box.i1 - b.box.i0;
-        for_cells(
-            b.box, [&](int i, int j) { return in[(j - b.box.j0) * width + (i - b.box.i0)]; },
-            [&](int i, int j, double v) { to[at(to_, i, j)] = v; });
-    }
+    for (const Block& b : receives_)
+        copy_cells(b.box, receive_buffer_.data() + b.offset, BoxStorage{b.box, 1, b.box.i1 - b.box.i0}, to, to_);
 }
 
 }  // namespace chute

@@ -76,6 +76,7 @@ chute_validation(turbulent_channel Turbulence.ChannelBulkVelocity 2 "validation"
 chute_validation(turbulent_channel_first_cell Turbulence.ChannelIndependentOfTheFirstCell 2 "validation")
 chute_validation(turbulent_channel_friction Turbulence.ChannelFrictionCoefficient 2 "validation;slow")
 chute_validation(free_fall_block_k_epsilon Turbulence.StudyBlockFallsAtTheExperimentsSpeed 2 "validation;slow")
+chute_validation(free_fall_block_window Turbulence.StudyBlockFallsAlikeInAWindowThatFollowsIt 2 "validation;slow")
 chute_validation(free_fall_block_body_fitted Turbulence.StudyBlockFallsBodyFittedConverged 2 "validation;slow")
 chute_validation(free_fall_block_body_fitted_layers Turbulence.StudyBlockFallsAlikeWithLayersAndATranslatingGrid 2 "validation;slow")
 chute_validation(slope_runout_water_air Turbulence.SlopeRunoutInWaterIsShorterThanInAir 2 "validation;slow")
