@@ -20,16 +20,17 @@ namespace chute {
 Axis build_axis(const AxisConfig& c, bool periodic) { return Axis(axis_lines(c), periodic); }
 
 namespace {
-// The decomposition, where the case leaves it to Chute: with the direct Poisson solve on one uniform axis, the
-// patches split only the other, so that each holds whole lines along the transform (direct_poisson.hpp: two
-// pencil transposes per solve instead of four). Else MPI's choice.
+// The decomposition, where the case leaves it to Chute: with the direct Poisson solve, the patches split only the
+// axis the tridiagonal systems run along, so that each holds whole lines along the transform and the systems are
+// solved where they lie (direct_poisson.hpp: no transpose at all). With both axes uniform the transform runs along
+// x, whose lines lie contiguous in memory (strided transforms along y cost FFTW copies). Else MPI's choice.
 std::array<int, 2> choose_ranks(const FlowConfig& c, const Axis& x, const Axis& y, MPI_Comm comm) {
     if (c.ranks[0] > 0 || c.ranks[1] > 0 || c.poisson_method != PoissonMethod::automatic) return c.ranks;
     int ranks = 1;
     MPI_Comm_size(comm, &ranks);
     const bool ux = uniform_axis(x), uy = uniform_axis(y);
-    if (ux && !uy && y.cells() >= kGhost * ranks) return {1, ranks};
-    if (uy && !ux && x.cells() >= kGhost * ranks) return {ranks, 1};
+    if (ux && !y.periodic() && y.cells() >= kGhost * ranks) return {1, ranks};
+    if (uy && !ux && !x.periodic() && x.cells() >= kGhost * ranks) return {ranks, 1};
     return c.ranks;
 }
 }  // namespace

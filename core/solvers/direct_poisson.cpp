@@ -52,6 +52,30 @@ void thomas(int n, const double* a, const double* b, const double* c, double eig
     for (int k = n - 2; k >= 0; --k) x[k] -= cp[k] * x[k + 1];
 }
 
+// A x = b for a small dense A (row-major, n x n), by Gaussian elimination with partial pivoting; b becomes x.
+void solve_dense(int n, double* A, double* b) {
+    for (int col = 0; col < n; ++col) {
+        int pivot = col;
+        for (int r = col + 1; r < n; ++r)
+            if (std::abs(A[r * n + col]) > std::abs(A[pivot * n + col])) pivot = r;
+        if (pivot != col) {
+            for (int k = 0; k < n; ++k) std::swap(A[col * n + k], A[pivot * n + k]);
+            std::swap(b[col], b[pivot]);
+        }
+        for (int r = col + 1; r < n; ++r) {
+            const double f = A[r * n + col] / A[col * n + col];
+            if (f == 0.0) continue;
+            for (int k = col; k < n; ++k) A[r * n + k] -= f * A[col * n + k];
+            b[r] -= f * b[col];
+        }
+    }
+    for (int r = n - 1; r >= 0; --r) {
+        double v = b[r];
+        for (int k = r + 1; k < n; ++k) v -= A[r * n + k] * b[k];
+        b[r] = v / A[r * n + r];
+    }
+}
+
 }  // namespace
 
 bool uniform_axis(const Axis& axis) {
@@ -102,10 +126,23 @@ DirectPoissonSolver::DirectPoissonSolver(const Grid& grid, std::array<bool, 4> d
         transform_ = {lines_along(t_, whole_lines(grid_, t_, rank, ranks)), false};
     // Stored x-fastest like the patch, so that the transposes copy whole runs of cells (along x the systems' sweeps
     // then run over neighbouring modes contiguously, along y over modes a row apart: independent chains either way).
-    if (split[d] == 1)
+    // Where the patches hold whole transform lines but split the systems' axis, the systems are solved where they
+    // lie, partitioned (solve_partitioned): no transpose at all.
+    partitioned_ = split[t_] == 1 && split[d] > 1;
+    if (split[d] == 1 || partitioned_)
         systems_ = {patch_, true};
     else
         systems_ = {lines_along(0, whole_lines(grid_, d, rank, ranks)), false};
+    if (partitioned_) {
+        row0_ = d == 0 ? X.offset : Y.offset;
+        rows_ = d == 0 ? X.n : Y.n;
+        row_starts_.assign(ranks, 0);
+        row_counts_.assign(ranks, 0);
+        MPI_Allgather(&row0_, 1, MPI_INT, row_starts_.data(), 1, MPI_INT, grid_.comm());
+        MPI_Allgather(&rows_, 1, MPI_INT, row_counts_.data(), 1, MPI_INT, grid_.comm());
+        partition_sm_ = t_ == 0 ? 1 : rows_;
+        partition_sk_ = t_ == 0 ? nt_ : 1;
+    }
     if (!transform_.in_patch) {
         transform_data_.assign(static_cast<std::size_t>(transform_.storage.box.cells()), 0.0);
         patch_to_transform_ = std::make_unique<PencilTranspose>(grid_.comm(), patch_, transform_.storage);
@@ -207,7 +244,10 @@ void DirectPoissonSolver::update_lines() {
         width_[k] = D.width(k);
         rhs_scale_[k] = width_[k] / normalisation_;
     }
-    if (cyclic_) prepare_cyclic();
+    if (partitioned_)
+        partition_prepare();
+    else if (cyclic_)
+        prepare_cyclic();
 }
 
 // Periodic systems by Sherman-Morrison (Press et al., Numerical Recipes, 2.7): A = T + u v^T with corners
@@ -249,7 +289,10 @@ void DirectPoissonSolver::solve(const Field2D& source, Field2D& p) {
     // 2. Each mode's tridiagonal system along D.
     double* lines_d = systems_.in_patch ? p.origin() : systems_data_.data();
     if (transform_to_systems_) transform_to_systems_->run(lines_t, lines_d);
-    solve_modes(lines_d, systems_.storage);
+    if (partitioned_)
+        solve_partitioned(lines_d, t_ == 0 ? patch_.si : patch_.sj, t_ == 0 ? patch_.sj : patch_.si);
+    else
+        solve_modes(lines_d, systems_.storage);
     if (systems_to_transform_) systems_to_transform_->run(lines_d, lines_t);
     // 3. Back along T.
     if (inverse_) fftw_execute_r2r(inverse_, lines_t, lines_t);
@@ -264,26 +307,33 @@ void DirectPoissonSolver::solve_modes(double* data, const BoxStorage& L) {
         solve_null_mode(data, sk);
         l_begin = 1;
     }
-    const double* a = lower_.data();
-    const double* c = upper_.data();
-    const double* w = width_.data();
-    const double* r = rhs_scale_.data();
-    const int n = nd_;
-    // Thomas' algorithm on a block of neighbouring modes at once: the sweeps along k run over the block's modes
-    // in the inner loop (contiguous when modes are, so it vectorises; independent chains either way).
+    sweep_modes(data, sm, sk, first_mode, l_begin, modes, 0, nd_, cyclic_);
+}
+
+// Thomas' algorithm on rows [k0, k0 + n) of the modes l_begin .. modes - 1 (of those from first_mode on; data at
+// mode first_mode, row k0), right-hand sides scaled by rhs_scale_ on the way. Rows outside are not coupled (the
+// partitioned solve couples them afterwards); `cyclic`: the whole periodic line, by Sherman-Morrison. The modes go
+// in blocks: the sweeps along k run over a block's modes in the inner loop (contiguous when modes are, so it
+// vectorises; independent chains either way), its working set in cache.
+void DirectPoissonSolver::sweep_modes(double* data, std::ptrdiff_t sm, std::ptrdiff_t sk, int first_mode, int l_begin,
+                                      int modes, int k0, int n, bool cyclic) {
+    const double* a = lower_.data() + k0;
+    const double* c = upper_.data() + k0;
+    const double* b = diagonal_.data() + k0;
+    const double* w = width_.data() + k0;
+    const double* r = rhs_scale_.data() + k0;
     for (int l0 = l_begin; l0 < modes; l0 += kModeBlock) {
         const int count = std::min(kModeBlock, modes - l0);
         const double* lambda = eigenvalue_.data() + first_mode + l0;
         double* base = data + l0 * sm;
         double* cp = scratch_.data();
         for (int k = 0; k < n; ++k) {
-            double b = diagonal_[k];
             double* x = base + k * sk;
             double* cpk = cp + static_cast<std::size_t>(k) * count;
             if (k == 0) {
                 for (int q = 0; q < count; ++q) {
-                    double den = b + lambda[q] * w[0];
-                    if (cyclic_) den -= cyclic_gamma_[l0 + q];
+                    double den = b[0] + lambda[q] * w[0];
+                    if (cyclic) den -= cyclic_gamma_[l0 + q];
                     const double inv = 1.0 / den;
                     cpk[q] = c[0] * inv;
                     x[q * sm] = x[q * sm] * r[0] * inv;
@@ -292,9 +342,9 @@ void DirectPoissonSolver::solve_modes(double* data, const BoxStorage& L) {
             }
             const double* xp = x - sk;
             const double* cpp = cpk - count;
-            const bool last_cyclic = cyclic_ && k == n - 1;
+            const bool last_cyclic = cyclic && k == n - 1;
             for (int q = 0; q < count; ++q) {
-                double den = b + lambda[q] * w[k] - a[k] * cpp[q];
+                double den = b[k] + lambda[q] * w[k] - a[k] * cpp[q];
                 if (last_cyclic) den -= upper_[n - 1] * lower_[0] / cyclic_gamma_[l0 + q];
                 const double inv = 1.0 / den;
                 cpk[q] = c[k] * inv;
@@ -306,7 +356,7 @@ void DirectPoissonSolver::solve_modes(double* data, const BoxStorage& L) {
             const double* cpk = cp + static_cast<std::size_t>(k) * count;
             for (int q = 0; q < count; ++q) x[q * sm] -= cpk[q] * x[q * sm + sk];
         }
-        if (!cyclic_) continue;
+        if (!cyclic) continue;
         const double beta = lower_[0];
         for (int q = 0; q < count; ++q) {
             const int l = l0 + q;
@@ -315,6 +365,105 @@ void DirectPoissonSolver::solve_modes(double* data, const BoxStorage& L) {
             const double factor = (x[0] + beta * x[(n - 1) * sk] / cyclic_gamma_[l]) * cyclic_inverse_[l];
             for (int k = 0; k < n; ++k) x[k * sk] -= factor * z[k];
         }
+    }
+}
+
+// The partitioned solve (Wang 1981, ACM TOMS 7:170; the substructuring of PaScaL_TDMA, Kim et al. 2021, CPC
+// 260:107722) where the patches split the systems' axis and hold whole lines along the transform: no transpose.
+// Each rank solves its rows with the neighbours' unknowns taken as 0, y = A_p^-1 r; the true solution is
+// x = y - (a_first x_before) g - (c_last x_after) h, with g = A_p^-1 e_first and h = A_p^-1 e_last (made once,
+// partition_prepare). Each rank's first and last unknowns F_p, L_p then satisfy, per mode, a system of 2P rows
+//   F_p + a_p gF_p L_{p-1} + c_p hF_p F_{p+1} = yF_p,   L_p + a_p gL_p L_{p-1} + c_p hL_p F_{p+1} = yL_p
+// (indices modulo P: on a non-periodic axis the ends' couplings are 0), gathered over the ranks and solved on each.
+void DirectPoissonSolver::partition_prepare() {
+    const int ranks = grid_.size();
+    const int n = rows_;
+    partition_g_.assign(static_cast<std::size_t>(nt_) * n, 0.0);
+    partition_h_.assign(static_cast<std::size_t>(nt_) * n, 0.0);
+    std::vector<double> edges(4 * static_cast<std::size_t>(nt_), 0.0), line(n);
+    for (int m = 0; m < nt_; ++m) {
+        if (singular_ && m == 0) continue;  // solved whole (solve_null_mode)
+        for (int unit = 0; unit < 2; ++unit) {
+            std::fill(line.begin(), line.end(), 0.0);
+            line[unit == 0 ? 0 : n - 1] = 1.0;
+            thomas(n, lower_.data() + row0_, diagonal_.data() + row0_, upper_.data() + row0_, eigenvalue_[m],
+                   width_.data() + row0_, line.data(), scratch_.data());
+            std::vector<double>& store = unit == 0 ? partition_g_ : partition_h_;
+            for (int k = 0; k < n; ++k)
+                store[static_cast<std::size_t>(m) * partition_sm_ + k * partition_sk_] = line[k];
+            edges[4 * m + 2 * unit] = line[0];
+            edges[4 * m + 2 * unit + 1] = line[n - 1];
+        }
+    }
+    partition_edges_.assign(4 * static_cast<std::size_t>(nt_) * ranks, 0.0);
+    MPI_Allgather(edges.data(), 4 * nt_, MPI_DOUBLE, partition_edges_.data(), 4 * nt_, MPI_DOUBLE, grid_.comm());
+}
+
+void DirectPoissonSolver::solve_partitioned(double* data, std::ptrdiff_t sm, std::ptrdiff_t sk) {
+    const int ranks = grid_.size(), me = grid_.rank();
+    const int n = rows_;
+    int m_begin = 0;
+    if (singular_) {
+        // Mode 0 whole on every rank: its line gathered, solved, this rank's rows kept.
+        std::vector<double> mine(n), line(nd_);
+        for (int k = 0; k < n; ++k) mine[k] = data[k * sk];
+        MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, line.data(), row_counts_.data(), row_starts_.data(), MPI_DOUBLE,
+                       grid_.comm());
+        solve_null_mode(line.data(), 1);
+        for (int k = 0; k < n; ++k) data[k * sk] = line[row0_ + k];
+        m_begin = 1;
+    }
+    sweep_modes(data, sm, sk, 0, m_begin, nt_, row0_, n, false);
+
+    // The first and last unknowns of y, every rank's, per mode.
+    std::vector<double> mine(2 * static_cast<std::size_t>(nt_)), all(2 * static_cast<std::size_t>(nt_) * ranks);
+    for (int m = 0; m < nt_; ++m) {
+        mine[2 * m] = data[m * sm];
+        mine[2 * m + 1] = data[m * sm + (n - 1) * sk];
+    }
+    MPI_Allgather(mine.data(), 2 * nt_, MPI_DOUBLE, all.data(), 2 * nt_, MPI_DOUBLE, grid_.comm());
+
+    // Per mode the 2P x 2P system (Gaussian elimination with partial pivoting), then this rank's correction.
+    const int size = 2 * ranks;
+    std::vector<double> A(static_cast<std::size_t>(size) * size), u(size);
+    std::vector<double> from_before(nt_, 0.0), from_after(nt_, 0.0);
+    const int before = (me + ranks - 1) % ranks, after = (me + 1) % ranks;
+    for (int m = m_begin; m < nt_; ++m) {
+        std::fill(A.begin(), A.end(), 0.0);
+        for (int p = 0; p < ranks; ++p) {
+            const double a = lower_[row_starts_[p]], c = upper_[row_starts_[p] + row_counts_[p] - 1];
+            const double* e = partition_edges_.data() + (static_cast<std::size_t>(p) * nt_ + m) * 4;  // gF gL hF hL
+            const int F = 2 * p, L = 2 * p + 1;
+            const int L_before = 2 * ((p + ranks - 1) % ranks) + 1, F_after = 2 * ((p + 1) % ranks);
+            A[F * size + F] += 1.0;
+            A[F * size + L_before] += a * e[0];
+            A[F * size + F_after] += c * e[2];
+            A[L * size + L] += 1.0;
+            A[L * size + L_before] += a * e[1];
+            A[L * size + F_after] += c * e[3];
+            u[F] = all[(static_cast<std::size_t>(p) * nt_ + m) * 2];
+            u[L] = all[(static_cast<std::size_t>(p) * nt_ + m) * 2 + 1];
+        }
+        solve_dense(size, A.data(), u.data());
+        from_before[m] = lower_[row0_] * u[2 * before + 1];
+        from_after[m] = upper_[row0_ + n - 1] * u[2 * after];
+    }
+    // x -= (a x_before) g + (c x_after) h, in the order the cells lie in memory.
+    if (sm == 1) {
+        for (int k = 0; k < n; ++k) {
+            double* x = data + k * sk;
+            const double* g = partition_g_.data() + static_cast<std::size_t>(k) * partition_sk_;
+            const double* h = partition_h_.data() + static_cast<std::size_t>(k) * partition_sk_;
+            for (int m = m_begin; m < nt_; ++m) x[m] -= from_before[m] * g[m] + from_after[m] * h[m];
+        }
+        return;
+    }
+    for (int m = m_begin; m < nt_; ++m) {
+        double* x = data + m * sm;
+        const double* g = partition_g_.data() + static_cast<std::size_t>(m) * partition_sm_;
+        const double* h = partition_h_.data() + static_cast<std::size_t>(m) * partition_sm_;
+        for (int k = 0; k < n; ++k)
+            x[k * sk] -= from_before[m] * g[k * partition_sk_] + from_after[m] * h[k * partition_sk_];
     }
 }
 

@@ -59,6 +59,11 @@ private:
     void prepare_cyclic();  // the Sherman-Morrison vectors of the periodic systems
     // The tridiagonal systems of the modes in `layout`, right-hand sides in, solutions out.
     void solve_modes(double* data, const BoxStorage& layout);
+    void sweep_modes(double* data, std::ptrdiff_t sm, std::ptrdiff_t sk, int first_mode, int l_begin, int modes, int k0,
+                     int n, bool cyclic);
+    // The systems split over the ranks along their axis, solved where they lie (no transpose).
+    void partition_prepare();
+    void solve_partitioned(double* data, std::ptrdiff_t sm, std::ptrdiff_t sk);
     void solve_null_mode(double* x, std::ptrdiff_t stride);  // mode 0 of the singular problem
 
     const Grid& grid_;
@@ -76,6 +81,15 @@ private:
     std::vector<double> scratch_;
     // Periodic systems, per mode of this rank: gamma, 1 / (1 + z_0 + beta z_{n-1} / gamma), and z (nd_ each).
     std::vector<double> cyclic_gamma_, cyclic_inverse_, cyclic_z_;
+
+    // The partitioned solve: this rank's rows [row0_, row0_ + rows_) of the systems' axis, every rank's (for the
+    // gathers), g and h per mode and row (stored like the patch: element (m, k) at m partition_sm_ + k partition_sk_),
+    // and every rank's first and last values of g and h per mode.
+    bool partitioned_ = false;
+    int row0_ = 0, rows_ = 0;
+    std::vector<int> row_starts_, row_counts_;
+    std::vector<double> partition_g_, partition_h_, partition_edges_;
+    std::ptrdiff_t partition_sm_ = 1, partition_sk_ = 1;
 
     BoxStorage patch_;
     Layout transform_, systems_;

@@ -18,8 +18,8 @@ using namespace chute;
 
 namespace {
 
-// A square of side 1 moving down at 1 m/s (Re 40: a steady wake) through a channel 4 wide with slip sides, periodic along y (12
-// long), 16 cells across the square.
+// A square of side 1 moving down at 1 m/s (Re 40: a steady wake) through a channel 4 wide with slip sides, periodic
+// along y (12 long), 16 cells across the square.
 std::string moving_square(const std::string& follow) {
     return R"(
 name: moving_square
@@ -99,25 +99,25 @@ TEST(FollowingFrame, MovingSquareMatchesTheFixedGridWithoutTheCellCrossingRipple
     double mean_fixed = 0.0, mean_following = 0.0;
     const double ripple_fixed = ripple(fixed.forcing, mean_fixed);
     const double ripple_following = ripple(following.forcing, mean_following);
-    std::printf("moving square: drag over t = 0.5-1.9 s fixed %.3f, following %.3f N/m (%.2e); ripple rms %.2e / "
-                "%.2e of the mean; grid moved %.6f m\n",
-                mean_fixed, mean_following, std::abs(mean_following - mean_fixed) / std::abs(mean_fixed),
-                ripple_fixed / std::abs(mean_fixed), ripple_following / std::abs(mean_following),
-                following.grid_travel);
+    std::printf(
+        "moving square: drag over t = 0.5-1.9 s fixed %.3f, following %.3f N/m (%.2e); ripple rms %.2e / "
+        "%.2e of the mean; grid moved %.6f m\n",
+        mean_fixed, mean_following, std::abs(mean_following - mean_fixed) / std::abs(mean_fixed),
+        ripple_fixed / std::abs(mean_fixed), ripple_following / std::abs(mean_following), following.grid_travel);
     EXPECT_NEAR(following.grid_travel, -2.0, 1e-12);  // 200 steps of 0.01 s at 1 m/s
     EXPECT_LT(std::abs(mean_following - mean_fixed) / std::abs(mean_fixed), 1e-2);
     EXPECT_LT(ripple_following, 0.2 * ripple_fixed);
 }
 
 TEST(FollowingFrame, RefusesWhatItCannotFollowNamingTheKey) {
-    const std::string walls =
-        refusal({"boundaries.bottom={type: wall}", "boundaries.top={type: outflow}"});
+    const std::string walls = refusal({"boundaries.bottom={type: wall}", "boundaries.top={type: outflow}"});
     EXPECT_NE(walls.find("boundaries.bottom.type"), std::string::npos) << walls;
     EXPECT_NE(walls.find("across the motion"), std::string::npos) << walls;
     EXPECT_EQ(refusal({"boundaries.bottom={type: inflow, velocity: [0.0, 0.0]}", "boundaries.top={type: outflow}"}),
               "");
-    const std::string two = refusal({"bodies.other={shape: circle, centre: [1.0, 3.0], diameter: 0.2, follow: y, "
-                                     "motion: {type: constant_velocity, velocity: [0.0, -0.1]}}"});
+    const std::string two =
+        refusal({"bodies.other={shape: circle, centre: [1.0, 3.0], diameter: 0.2, follow: y, "
+                 "motion: {type: constant_velocity, velocity: [0.0, -0.1]}}"});
     EXPECT_NE(two.find("one body at most"), std::string::npos) << two;
     try {
         (void)parse_case_text(moving_square("y"), {"bodies.square.motion={type: fixed}"});
