@@ -12,9 +12,12 @@
 //   Neumann-Dirichlet DCT-IV  (REDFT11, its own inverse)        theta_m = pi (m + 1/2) / N
 //   Dirichlet-Neumann DST-IV  (RODFT11)                         theta_m = pi (m + 1/2) / N
 //   periodic          real DFT (R2HC / HC2R)                    theta_m = 2 pi k / N (k = m or N - m)
-// with eigenvalue -4 sin^2(theta_m / 2) / h^2. The data move between the ranks' patches and whole lines of one
-// direction with pencil transposes (pencil_transpose.hpp): patches -> lines along the transform (transform) ->
-// lines along the other axis (tridiagonal solves, cyclic if periodic) -> back.
+// with eigenvalue -4 sin^2(theta_m / 2) / h^2. Where the data lie while they are transformed and solved:
+//   one rank: in p itself (transform out of place from the source, sweeps, inverse in place), no copy;
+//   patches holding whole transform lines, splitting the other axis (what an automatic decomposition makes): the
+//     transform in p, the tridiagonal systems partitioned over the ranks where they lie (solve_partitioned);
+//   any other decomposition: pencil transposes (pencil_transpose.hpp) to whole lines along the transform, then
+//     along the other axis, and back.
 #include <array>
 #include <memory>
 #include <vector>
