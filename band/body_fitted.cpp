@@ -64,18 +64,12 @@ BodyFitted::BodyFitted(const Grid& grid, const BodyFittedSettings& settings, std
 // gap, which must stay open (contact at contact.distance); the rebound law acts with either treatment of the water's
 // impulse (contact.water_impulse), and the exact coupling brings the water to the block's velocity.
 void BodyFitted::refuse_contact_it_cannot_take(const Body& body, int axis) const {
-    if (wall_across(axis) < 0 || !body.free()) return;
+    if (wall_across(settings_.boundaries, axis) < 0 || !body.free()) return;
     if (!(settings_.contact_distance > 0.0))
         throw std::invalid_argument(
             "contact.distance: the body_fitted body `" + body.name() +
             "` with grid_motion layers can reach a wall across its motion, and meets it at a gap that its last layer "
             "fills: set a gap > 0 (the block's first cell, or the study's 0.1 m)");
-}
-
-int BodyFitted::wall_across(int axis) const {
-    for (int s = 2 * axis; s < 2 * axis + 2; ++s)
-        if (settings_.boundaries[s] == BoundaryType::wall || settings_.boundaries[s] == BoundaryType::slip) return s;
-    return -1;
 }
 
 bool BodyFitted::moves_along(const Body& body, int axis) const {
@@ -85,11 +79,10 @@ bool BodyFitted::moves_along(const Body& body, int axis) const {
 }
 
 void BodyFitted::refuse_walls_across_motion(const Body& body) const {
-    static const char* const side_names[4] = {"left", "right", "bottom", "top"};
     for (int axis = 0; axis < 2; ++axis) {
-        const int s = moves_along(body, axis) ? wall_across(axis) : -1;
+        const int s = moves_along(body, axis) ? wall_across(settings_.boundaries, axis) : -1;
         if (s < 0) continue;
-        throw std::invalid_argument(std::string("boundaries.") + side_names[s] +
+        throw std::invalid_argument("boundaries." + std::string(kSideNames[s]) +
                                     ".type: a wall across the motion of the body_fitted body `" + body.name() +
                                     "`, which carries the grid (and its boundaries) along " + (axis == 0 ? "x" : "y") +
                                     ": use inflow (water at rest) ahead and outflow behind" +

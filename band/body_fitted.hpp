@@ -96,7 +96,6 @@ private:
     void follow();
     void refuse_walls_across_motion(const Body& body) const;
     bool moves_along(const Body& body, int axis) const;
-    int wall_across(int axis) const;  // a wall or slip side at an end of `axis` (its index), or -1
     void refuse_contact_it_cannot_take(const Body& body, int axis) const;
     // The modifier layers along the axes the carrying body moves along (grid_motion: layers).
     std::array<std::optional<AxisLayers>, 2> layers_;

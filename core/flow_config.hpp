@@ -6,6 +6,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "poisson_method.hpp"
@@ -28,6 +29,17 @@ struct AxisConfig {
 enum class BoundaryType { wall, slip, inflow, outflow, periodic };
 enum class OutflowKind { convective, zero_stress };
 enum class InflowProfile { uniform, parabolic };
+
+// The case file's names of the sides (boundaries.<side>), indexed like the boundaries: left, right, bottom, top.
+inline constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
+
+// The first side at an end of `axis` (0: x, 1: y) that is a wall or a slip wall, or -1: what a grid translating
+// along that axis cannot carry with it (its boundaries move with it: band/body_fitted, run/following_frame).
+inline int wall_across(const std::array<BoundaryType, 4>& types, int axis) {
+    for (int s = 2 * axis; s < 2 * axis + 2; ++s)
+        if (types[s] == BoundaryType::wall || types[s] == BoundaryType::slip) return s;
+    return -1;
+}
 
 struct BoundaryConfig {
     BoundaryType type = BoundaryType::wall;

@@ -12,8 +12,6 @@ namespace chute {
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kSideNames = {"left", "right", "bottom", "top"};
-
 // domain.refinement f scales an axis as a grid-convergence study does: f times the cells, each f times narrower,
 // the growth ratio r^(1/f) so that f cells grow as much as one did (the stretching keeps its shape).
 void refine_axis(const CaseReader& r, const std::string& p, double f, AxisConfig& a) {

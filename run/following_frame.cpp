@@ -5,7 +5,8 @@
 namespace chute {
 
 std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
-    static const char* const side_names[4] = {"left", "right", "bottom", "top"};
+    std::array<BoundaryType, 4> types{};
+    for (int s = 0; s < 4; ++s) types[s] = config.boundary[s].type;
     const std::vector<BodyConfig>& bodies = config.bodies;
     std::optional<FollowingFrame> frame;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -14,10 +15,10 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
             throw std::invalid_argument("bodies." + bodies[b].name + ".follow: the grid already follows bodies." +
                                         bodies[frame->body()].name + ": one body at most");
         frame.emplace(b, bodies[b].follow);
-        for (int s = 0; s < 4; ++s) {
-            const BoundaryType type = config.boundary[s].type;
-            if (!bodies[b].follow[s / 2] || (type != BoundaryType::wall && type != BoundaryType::slip)) continue;
-            throw std::invalid_argument(std::string("boundaries.") + side_names[s] +
+        for (int axis = 0; axis < 2; ++axis) {
+            const int s = bodies[b].follow[axis] ? wall_across(types, axis) : -1;
+            if (s < 0) continue;
+            throw std::invalid_argument("boundaries." + std::string(kSideNames[s]) +
                                         ".type: a wall across the motion of the grid following bodies." +
                                         bodies[b].name + " would move with it: give `inflow` with velocity [0, 0] " +
                                         "(the water at rest ahead), `outflow`, or a periodic pair");
