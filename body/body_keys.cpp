@@ -112,12 +112,14 @@ std::vector<CaseKey> body_keys() {
          .choices = {"none", "x", "y", "xy"},
          .when_key = "carrier",
          .when_values = {"immersed"},
-         .meaning = "The grid follows this moving body along these axes (a frame that follows the block, "
-                    "run/following_frame.hpp): the whole grid translates with the body's velocity, the convective "
-                    "fluxes see the velocity relative to it, and the domain is a window around the body (its "
-                    "boundaries move too: an `inflow` at velocity [0, 0] is the water at rest ahead, an `outflow` "
-                    "lets the wake out behind; no walls across the motion). Velocities, positions and fields stay "
-                    "in the inertial frame. One body at most."},
+         .meaning = "The grid follows this moving body along these axes (a window that follows the block, "
+                    "run/following_frame.hpp): between steps the grid moves by whole cells so that the body stays "
+                    "within a cell of where it started on it, and the domain is a window a few body lengths around "
+                    "it instead of its whole path. The followed axes must be uniform; the boundaries across the "
+                    "motion move with the window: an `inflow` at velocity [0, 0] is the water at rest ahead (give "
+                    "it 7 or more body sizes), an `outflow` lets the wake out behind at the speed relative to the "
+                    "window; no walls across the motion. Velocities, positions and fields are those of the fixed "
+                    "frame. One body at most."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "

@@ -357,6 +357,54 @@ void FlowSolver::change_grid_lines(std::vector<double> x_lines, std::vector<doub
     bc_->apply_pressure(p_);
 }
 
+void FlowSolver::shift_one_cell(int axis, int direction) {
+    const Axis& along = axis == 0 ? grid_->x_axis() : grid_->y_axis();
+    struct Shifted {
+        Field2D* field;
+        bool on_lines;  // on the axis's lines (u for x, v for y, the corners), else at cell centres along it
+    };
+    std::vector<Shifted> fields = {{&vel_.u, axis == 0},     {&vel_.v, axis == 1}, {&rhs_old_.u, axis == 0},
+                                   {&rhs_old_.v, axis == 1}, {&p_, false},         {&p_old_, false},
+                                   {&eddy_.cell, false},     {&eddy_.corner, true}};
+    for (Field2D* f : remapped_) fields.push_back({f, false});
+    const bool open_low = grid_->touches(axis == 0 ? Side::left : Side::bottom) && !along.periodic();
+    const bool open_high = grid_->touches(axis == 0 ? Side::right : Side::top) && !along.periodic();
+    const int n = axis == 0 ? grid_->nx() : grid_->ny(), across = axis == 0 ? grid_->ny() : grid_->nx();
+    Field2D old;
+    for (const Shifted& s : fields) {
+        Field2D& f = *s.field;
+        halo_->exchange(f);  // a patch's first or last row comes from its neighbour (or the periodic wrap)
+        old = f;
+        // The last index along the axis that holds a value of the domain: a boundary face for a field on the lines.
+        const int last = s.on_lines ? n : n - 1;
+        for (int k = 0; k < n; ++k) {
+            int from = k + direction;
+            if (open_low && from < 0) from = 0;
+            if (open_high && from > last) from = last;
+            for (int m = -kGhost; m < across + kGhost; ++m) {
+                if (axis == 0)
+                    f(k, m) = old(from, m);
+                else
+                    f(m, k) = old(m, from);
+            }
+        }
+        halo_->exchange(f);
+    }
+    // Lines: a uniform axis moves by one of its (equal) widths; the lines kept are copied, so the spacings do not
+    // change and neither does the Poisson matrix.
+    std::vector<double> lines = along.lines();
+    const std::size_t count = lines.size();
+    if (direction > 0) {
+        std::rotate(lines.begin(), lines.begin() + 1, lines.end());
+        lines[count - 1] = lines[count - 2] + (lines[count - 2] - lines[count - 3]);
+    } else {
+        std::rotate(lines.rbegin(), lines.rbegin() + 1, lines.rend());
+        lines[0] = lines[1] - (lines[2] - lines[1]);
+    }
+    set_grid_lines(axis == 0 ? lines : grid_->x_axis().lines(), axis == 1 ? lines : grid_->y_axis().lines(), true);
+    refresh_ghosts();
+}
+
 std::array<double, 2> FlowSolver::project_after_change() {
     const double before = kinetic_energy(*grid_, vel_, fluid_cells());
     project_start();

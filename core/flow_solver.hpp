@@ -169,9 +169,19 @@ public:
     // (core/grid/remap.hpp). Rebuilds the Poisson matrix. The remapped velocity is not divergence-free on the new
     // cells: after the solid cells are set again, project_after_change() projects it. Collective.
     void change_grid_lines(std::vector<double> x_lines, std::vector<double> y_lines);
-    // Fields of another model that change_grid_lines() remaps with the flow's (cell-centred, ghosts exchanged
-    // here): the turbulence model's k and epsilon. The field must outlive the solver.
+    // Fields of another model that change_grid_lines() remaps and shift_one_cell() shifts with the flow's
+    // (cell-centred, ghosts exchanged here): the turbulence model's k and epsilon. The field must outlive the solver.
     void remap_with_grid(Field2D* field) { remapped_.push_back(field); }
+    // A window that follows a body by whole cells (run/following_frame.hpp), between steps: the lines of a uniform
+    // `axis` move by one cell towards its end (`direction` +1) or its start (-1), and every field keeps its values
+    // where they are in space (the value at index k is the one that was at k + direction). What leaves the
+    // domain is dropped; the row that enters copies the one beside it (zero gradient; a boundary face keeps its
+    // value), and on a periodic axis the rows wrap. The AB2 history and the pressure history go along, so on a
+    // periodic axis the step after a shift is the fixed grid's step, relabelled. Collective.
+    void shift_one_cell(int axis, int direction);
+    // The velocity of a window whose boundaries move on average with `w` while its lines stay (shift_one_cell): the
+    // convective outflow carries the flow out at the speed relative to it. The fluxes do not see it.
+    void set_boundary_frame_velocity(std::array<double, 2> w) { bc_->set_frame_velocity(w); }
     // Project the velocity once on the changed grid (OpenFOAM's correctPhi after a topology change): u -= grad
     // phi, laplacian phi = div u; the pressure stays. Returns the kinetic energy (m^4/s^2 per unit density and
     // depth, fluid cells) before and after. Collective.

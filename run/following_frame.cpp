@@ -1,6 +1,9 @@
 #include "following_frame.hpp"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace chute {
 
@@ -14,27 +17,47 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
         if (frame)
             throw std::invalid_argument("bodies." + bodies[b].name + ".follow: the grid already follows bodies." +
                                         bodies[frame->body()].name + ": one body at most");
-        frame.emplace(b, bodies[b].follow);
+        frame.emplace(b, bodies[b].follow, bodies[b].centre, std::array<double, 2>{config.x.start, config.y.start});
         for (int axis = 0; axis < 2; ++axis) {
-            const int s = bodies[b].follow[axis] ? wall_across(types, axis) : -1;
-            if (s < 0) continue;
-            throw std::invalid_argument("boundaries." + std::string(kSideNames[s]) +
-                                        ".type: a wall across the motion of the grid following bodies." +
-                                        bodies[b].name + " would move with it: give `inflow` with velocity [0, 0] " +
-                                        "(the water at rest ahead), `outflow`, or a periodic pair");
+            if (!bodies[b].follow[axis]) continue;
+            if (const int s = wall_across(types, axis); s >= 0)
+                throw std::invalid_argument("boundaries." + std::string(kSideNames[s]) +
+                                            ".type: a wall across the motion of the grid following bodies." +
+                                            bodies[b].name + " would move with it: give `inflow` with velocity " +
+                                            "[0, 0] (the water at rest ahead), `outflow`, or a periodic pair");
+            // The grid moves by whole cells and keeps its spacings: every cell of the axis the same width.
+            const std::vector<double> lines = axis_lines(axis == 0 ? config.x : config.y);
+            const double width = (lines.back() - lines.front()) / static_cast<double>(lines.size() - 1);
+            for (std::size_t k = 0; k + 1 < lines.size(); ++k)
+                if (std::abs(lines[k + 1] - lines[k] - width) > 1e-9 * width)
+                    throw std::invalid_argument(std::string("domain.") + (axis == 0 ? "x" : "y") +
+                                                ": the grid following bodies." + bodies[b].name +
+                                                " moves by whole cells along it, so its cells must be equal (give "
+                                                "`cells` with the uniform spacing)");
         }
     }
     return frame;
 }
 
-void FollowingFrame::begin_step(FlowSolver& flow, const Body& body) {
+std::array<int, 2> FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
+    std::array<int, 2> moved{0, 0};
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!axes_[axis]) continue;
+        const Axis& along = axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
+        const double width = along.width(0);
+        // Where the body started on the grid, carried with the lines; the body within a cell of it.
+        auto offset = [&] {
+            const double anchor = body_start_[axis] + (along.start() - domain_start_[axis]);
+            return body.state().centre[axis] - anchor;
+        };
+        while (offset() >= width) flow.shift_one_cell(axis, +1), ++moved[axis];
+        while (offset() <= -width) flow.shift_one_cell(axis, -1), --moved[axis];
+    }
+    if (turbulence && (moved[0] != 0 || moved[1] != 0)) turbulence->restored();
+    // The window moves on average with the body: its outflow lets the wake out at the speed relative to that.
     const Vec2 v = body.state().velocity;
-    velocity_ = {axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0};
-    flow.set_frame_velocity(velocity_);
-}
-
-void FollowingFrame::move(FlowSolver& flow, double dt) const {
-    if (velocity_[0] != 0.0 || velocity_[1] != 0.0) flow.translate_grid(velocity_[0] * dt, velocity_[1] * dt);
+    flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
+    return moved;
 }
 
 }  // namespace chute

@@ -71,12 +71,8 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     solver.set_grid_lines(xl, yl);
     const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
     solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);  // the counters; no ghost is filled
-    if (const auto w = read_checkpoint_array(checkpoint, "flow_previous_grid_velocity"); w && w->size() == 2) {
+    if (const auto w = read_checkpoint_array(checkpoint, "flow_previous_grid_velocity"); w && w->size() == 2)
         solver.set_previous_grid_velocity({(*w)[0], (*w)[1]});
-        // A grid following a body moved at this velocity in the checkpoint's last step: the next step's limit (chosen
-        // before the step sets the grid's new velocity) sees it as the uninterrupted run's did.
-        if (model.following_frame()) solver.set_frame_velocity({(*w)[0], (*w)[1]});
-    }
     model.free_bodies().restore(checkpoint);
     // The holes where the checkpoint's lines put them before anything fills their faces: filled where the case
     // first put them, they would overwrite the restored flow beside them (a grid with modifier layers).

@@ -11,14 +11,13 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     const double t = flow.time();
     flow.set_timer(timer);
 
-    FollowingFrame* frame = model.following_frame();
     {
         StageTimer::Scope timed(timer, "bodies");
+        if (const FollowingFrame* frame = model.following_frame())
+            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
         carrier.begin_step(flow.velocity());
-        if (frame) frame->begin_step(flow, model.bodies()[frame->body()]);
     }
     dt = flow.predict(dt);
-    if (frame) frame->move(flow, dt);  // the grid to where the step's fluxes (relative to it) took it
     {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.predict(t, dt);
