@@ -111,6 +111,10 @@ CheckpointHeader read_checkpoint(const Grid& grid, const std::filesystem::path& 
 
         for (const CheckpointField& f : fields) {
             const std::string name = field_dataset(f.name);
+            if (!file.has(name) && f.optional) {
+                header.absent.push_back(f.name);
+                continue;
+            }
             if (!file.has(name))
                 throw std::runtime_error("checkpoint '" + path.string() + "' has no field '" + f.name + "'");
             const std::vector<std::size_t> shape = file.shape(name);
@@ -119,15 +123,23 @@ CheckpointHeader read_checkpoint(const Grid& grid, const std::filesystem::path& 
                 throw std::runtime_error("checkpoint '" + path.string() + "': field '" + f.name +
                                          "' does not have the expected shape " + std::to_string(rows) + " x " +
                                          std::to_string(cols));
-            const int w = grid.nx() + (f.extra_x > 0 && grid.touches(Side::right) ? 1 : 0);
-            const int h = grid.ny() + (f.extra_y > 0 && grid.touches(Side::top) ? 1 : 0);
-            const std::vector<double> block = file.read_block(name, grid.ly().offset, grid.lx().offset,
-                                                              static_cast<std::size_t>(h), static_cast<std::size_t>(w));
+            // The patch and its halo, as far as the file's array reaches: the halo's values are the neighbours'
+            // own, which the exchange would bring, except beside a boundary face row or column (an outflow's faces,
+            // in a patch's corner halo, which the exchange leaves to the boundary condition's own update there).
+            const int ox = grid.lx().offset, oy = grid.ly().offset;
+            const int i0 = std::max(0, ox - kGhost), j0 = std::max(0, oy - kGhost);
+            const int i1 = std::min(static_cast<int>(cols), ox + grid.nx() + kGhost);
+            const int j1 = std::min(static_cast<int>(rows), oy + grid.ny() + kGhost);
+            const int w = i1 - i0, h = j1 - j0;
+            const std::vector<double> block =
+                file.read_block(name, static_cast<std::size_t>(j0), static_cast<std::size_t>(i0),
+                                static_cast<std::size_t>(h), static_cast<std::size_t>(w));
             Field2D& out = *f.field;
             if (out.nx() != grid.nx() || out.ny() != grid.ny())
                 throw std::invalid_argument("read_checkpoint: field '" + f.name + "' does not fit the patch");
-            for (int j = 0; j < h; ++j)
-                for (int i = 0; i < w; ++i) out(i, j) = block[static_cast<std::size_t>(j) * w + i];
+            for (int j = j0; j < j1; ++j)
+                for (int i = i0; i < i1; ++i)
+                    out(i - ox, j - oy) = block[static_cast<std::size_t>(j - j0) * w + (i - i0)];
         }
     });
     return header;

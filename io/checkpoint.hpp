@@ -24,6 +24,7 @@ struct CheckpointField {
     std::string name;
     Field2D* field;
     int extra_x = 0, extra_y = 0;  // 1: include the boundary face column (row), as in gather_global
+    bool optional = false;         // read if the file has it (newer checkpoints), else left as it is and listed
 };
 
 struct CheckpointArray {
@@ -36,7 +37,8 @@ struct CheckpointHeader {
     double time = 0.0;
     double dt = 0.0;
     double dt_previous = 0.0;
-    bool implicit_diffusion = false;  // the last step's diffusion scheme (absent in older files: false)
+    bool implicit_diffusion = false;    // the last step's diffusion scheme (absent in older files: false)
+    std::vector<std::string> absent{};  // optional fields the file does not have
 };
 
 // Collective. Writes `path` atomically (path.tmp, then rename): an older file of that name stays intact

@@ -53,7 +53,7 @@ std::array<int, 2> FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence
         while (offset() >= width) flow.shift_one_cell(axis, +1), ++moved[axis];
         while (offset() <= -width) flow.shift_one_cell(axis, -1), --moved[axis];
     }
-    if (turbulence && (moved[0] != 0 || moved[1] != 0)) turbulence->restored();
+    if (turbulence && (moved[0] != 0 || moved[1] != 0)) turbulence->shifted();
     // The window moves on average with the body: its outflow lets the wake out at the speed relative to that.
     const Vec2 v = body.state().velocity;
     flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});

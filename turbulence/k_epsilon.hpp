@@ -46,8 +46,12 @@ public:
     void set_initial_condition();
     // Advance k and eps over the flow step just taken (dt), then refresh nu_t.
     void update(double dt);
-    // After k and eps were read from a checkpoint.
-    void restored();
+    // After k and eps were read from a checkpoint, with the flow's cell eddy viscosity the last step ended with
+    // when the checkpoint has it (the cells beside an immersed surface keep the wall's values of that step).
+    void restored(const Field2D* eddy_cells = nullptr);
+    // After the grid moved by whole cells (FlowSolver::shift_one_cell moved k, eps and the eddy viscosity along):
+    // the walls located on the new lines, the ghosts and the corner eddy viscosity set again.
+    void shifted();
     // P_k of the current velocity and nu_t on owned cells (before the wall cells' log-law values).
     void production(Field2D& P) const;
     // Sub-steps of the last update (1 unless dt exceeded the explicit diffusion limit of k and eps).
@@ -86,7 +90,9 @@ private:
     // gradient on the others; periodic sides by the exchange.
     void set_ghosts(Field2D& f, const double* inflow) const;
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
-    void refresh_eddy_viscosity();
+    // nu_t from k and eps, the cells beside an immersed surface at least the wall's (or `cells`, the flow's cell
+    // eddy viscosity as a step left it), then the ghosts and the corners.
+    void refresh_eddy_viscosity(const Field2D* cells = nullptr);
     int substeps_for(double dt) const;
     std::string too_many_substeps(double needed, double dt, double max_nu_t) const;
 

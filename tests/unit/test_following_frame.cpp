@@ -159,16 +159,15 @@ output: {checkpoint_interval: 0.5, plots: false}
 
 }  // namespace
 
-// A run with a following grid stopped and restarted from its checkpoint ends bit for bit where the straight run
-// ends: the lines (where the window has moved to, and so where the body started on them) and the flow are in the
-// checkpoint.
-TEST(FollowingFrame, StopAndRestartEqualsStraightRun) {
+namespace {
+
+void expect_restart_equals_straight_run(const std::vector<std::string>& overrides, const std::string& tag) {
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     const auto dir = [&](const std::string& name) {
-        const auto d =
-            std::filesystem::temp_directory_path() / ("chute_test_following_" + name + "_np" + std::to_string(size));
+        const auto d = std::filesystem::temp_directory_path() /
+                       ("chute_test_following_" + tag + name + "_np" + std::to_string(size));
         if (rank == 0) {
             std::filesystem::remove_all(d);
             std::filesystem::create_directories(d);
@@ -176,7 +175,7 @@ TEST(FollowingFrame, StopAndRestartEqualsStraightRun) {
         MPI_Barrier(MPI_COMM_WORLD);
         return d;
     };
-    const CaseConfig config = parse_case_text(kFallingSquare);
+    const CaseConfig config = parse_case_text(kFallingSquare, overrides);
     const auto straight_dir = dir("straight"), split_dir = dir("split");
     RunOptions options;
     options.quiet = true;
@@ -193,12 +192,34 @@ TEST(FollowingFrame, StopAndRestartEqualsStraightRun) {
     EXPECT_EQ(stopped.steps + resumed.steps, straight.steps);
     EXPECT_EQ(resumed.time, straight.time);
     if (rank != 0) return;
-    for (const char* name : {"u", "v", "p"}) {
-        const auto x = Hdf5File::open_read(straight.last_checkpoint).read(std::string("/fields/") + name);
-        const auto y = Hdf5File::open_read(resumed.last_checkpoint).read(std::string("/fields/") + name);
+    std::vector<std::string> names = {"u", "v", "p"};
+    if (config.turbulence.model != TurbulenceModelType::laminar)
+        names.insert(names.end(), {"k", "epsilon", "eddy_viscosity"});
+    for (const std::string& name : names) {
+        const auto x = Hdf5File::open_read(straight.last_checkpoint).read("/fields/" + name);
+        const auto y = Hdf5File::open_read(resumed.last_checkpoint).read("/fields/" + name);
         ASSERT_EQ(x.size(), y.size());
         for (std::size_t k = 0; k < x.size(); ++k) ASSERT_EQ(x[k], y[k]) << name << "[" << k << "]";
     }
     EXPECT_EQ(chute_test::read_text(straight_dir / "timeseries.csv"),
               chute_test::read_text(split_dir / "timeseries.csv"));
+}
+
+}  // namespace
+
+// A run with a following grid stopped and restarted from its checkpoint ends bit for bit where the straight run
+// ends: the lines (where the window has moved to, and so where the body started on them) and the flow are in the
+// checkpoint.
+TEST(FollowingFrame, StopAndRestartEqualsStraightRun) { expect_restart_equals_straight_run({}, ""); }
+
+// The same with k-epsilon. Two things a restart did not find again, both found on the study's window (2026-11-25):
+// the cells beside the immersed surface take the wall's eddy viscosity from samples taken with k before the last
+// update, which k after it does not give back (now in the checkpoint; the fixed-domain example was 2e-7 apart in
+// its kinetic energy the step after a restart), and on 2 ranks the outflow's faces in a patch's corner halo, which
+// the convective condition updates there and no exchange sets (now read from the checkpoint with the halo).
+TEST(FollowingFrame, StopAndRestartEqualsStraightRunWithKEpsilon) {
+    expect_restart_equals_straight_run(
+        {"turbulence={model: k_epsilon, velocity_scale: 1.0, intensity: 0.01, length_scale: 0.01}",
+         "fluid.viscosity=1.0e-5"},
+        "ke_");
 }
