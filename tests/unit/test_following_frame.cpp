@@ -107,6 +107,22 @@ TEST(FollowingFrame, MovingSquareIsTheFixedGridRelabelled) {
     EXPECT_LT(split_largest, 1e-9 * std::abs(mean));
 }
 
+// The same along both axes: the square moving diagonally through a doubly periodic box, the grid following it in x
+// and y (16 moves in x, 31 in y over the 200 steps).
+TEST(FollowingFrame, DiagonalMotionIsTheFixedGridRelabelled) {
+    const std::vector<std::string> diagonal = {"boundaries.left={type: periodic}", "boundaries.right={type: periodic}",
+                                               "bodies.square.motion={type: constant_velocity, velocity: [0.5, -1.0]}"};
+    const Drag fixed = run("none", diagonal), following = run("xy", diagonal);
+    double mean = 0.0, largest = 0.0;
+    for (double f : fixed.forcing) mean += f / static_cast<double>(fixed.forcing.size());
+    for (std::size_t n = 0; n < fixed.forcing.size(); ++n)
+        largest = std::max(largest, std::abs(following.forcing[n] - fixed.forcing[n]));
+    std::printf("diagonal square: mean drag along y %.4f N/m, largest difference %.2e of it; grid moved %.4f m in y\n",
+                mean, largest / std::abs(mean), following.grid_travel);
+    EXPECT_LT(largest, 1e-9 * std::abs(mean));
+    EXPECT_NEAR(following.grid_travel, -2.0, 12.0 / 192.0 + 1e-12);
+}
+
 TEST(FollowingFrame, RefusesWhatItCannotFollowNamingTheKey) {
     const std::string walls = refusal({"boundaries.bottom={type: wall}", "boundaries.top={type: outflow}"});
     EXPECT_NE(walls.find("boundaries.bottom.type"), std::string::npos) << walls;
