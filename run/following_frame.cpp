@@ -1,9 +1,7 @@
 #include "following_frame.hpp"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace chute {
 
@@ -26,21 +24,18 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
                                             bodies[b].name + " would move with it: give `inflow` with velocity " +
                                             "[0, 0] (the water at rest ahead), `outflow`, or a periodic pair");
             // The grid moves by whole cells and keeps its spacings: every cell of the axis the same width.
-            const std::vector<double> lines = axis_lines(axis == 0 ? config.x : config.y);
-            const double width = (lines.back() - lines.front()) / static_cast<double>(lines.size() - 1);
-            for (std::size_t k = 0; k + 1 < lines.size(); ++k)
-                if (std::abs(lines[k + 1] - lines[k] - width) > 1e-9 * width)
-                    throw std::invalid_argument(std::string("domain.") + (axis == 0 ? "x" : "y") +
-                                                ": the grid following bodies." + bodies[b].name +
-                                                " moves by whole cells along it, so its cells must be equal (give "
-                                                "`cells` with the uniform spacing)");
+            if (!uniform_axis(Axis(axis_lines(axis == 0 ? config.x : config.y), false)))
+                throw std::invalid_argument(std::string("domain.") + (axis == 0 ? "x" : "y") +
+                                            ": the grid following bodies." + bodies[b].name +
+                                            " moves by whole cells along it, so its cells must be equal (give "
+                                            "`cells` with the uniform spacing)");
         }
     }
     return frame;
 }
 
-std::array<int, 2> FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
-    std::array<int, 2> moved{0, 0};
+void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
+    bool moved = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!axes_[axis]) continue;
         const Axis& along = axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
@@ -50,14 +45,13 @@ std::array<int, 2> FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence
             const double anchor = body_start_[axis] + (along.start() - domain_start_[axis]);
             return body.state().centre[axis] - anchor;
         };
-        while (offset() >= width) flow.shift_one_cell(axis, +1), ++moved[axis];
-        while (offset() <= -width) flow.shift_one_cell(axis, -1), --moved[axis];
+        for (; offset() >= width; moved = true) flow.shift_one_cell(axis, +1);
+        for (; offset() <= -width; moved = true) flow.shift_one_cell(axis, -1);
     }
-    if (turbulence && (moved[0] != 0 || moved[1] != 0)) turbulence->shifted();
+    if (turbulence && moved) turbulence->shifted();
     // The window moves on average with the body: its outflow lets the wake out at the speed relative to that.
     const Vec2 v = body.state().velocity;
     flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
-    return moved;
 }
 
 }  // namespace chute

@@ -38,9 +38,8 @@ public:
     std::size_t body() const { return body_; }
     // Before a step: move the grid by whole cells until the body is less than a cell from where it started on the
     // grid (the start's place on the lines is found again from the lines, so a restart needs nothing more). The
-    // turbulence model's walls, ghosts and corner eddy viscosity are set again after a move. Returns the cells
-    // moved along x and y.
-    std::array<int, 2> follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
+    // turbulence model's walls, ghosts and corner eddy viscosity are set again after a move.
+    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
 
 private:
     std::size_t body_;

@@ -12,8 +12,7 @@ namespace chute {
 
 namespace {
 
-// `eddy`: where a restart reads the eddy viscosity the last step ended with (null when writing: the flow's own).
-std::vector<CheckpointField> checkpoint_fields(Model& model, Field2D* eddy = nullptr) {
+std::vector<CheckpointField> checkpoint_fields(Model& model) {
     FlowSolver& s = model.flow();
     std::vector<CheckpointField> f = {{"u", &s.velocity().u, 1, 0},
                                       {"v", &s.velocity().v, 0, 1},
@@ -26,7 +25,7 @@ std::vector<CheckpointField> checkpoint_fields(Model& model, Field2D* eddy = nul
         f.push_back({"epsilon", &turbulence->epsilon(), 0, 0});
         // The cells beside an immersed surface take the wall's eddy viscosity from samples taken with k before the
         // last update; k after it gives other values, so a restart reads them (older checkpoints lack them).
-        f.push_back({"eddy_viscosity", eddy ? eddy : &s.eddy_viscosity().cell, 0, 0, true});
+        f.push_back({"eddy_viscosity", &s.eddy_viscosity().cell, 0, 0, true});
     }
     return f;
 }
@@ -74,9 +73,8 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
                                  std::to_string(yl.size() - 1) + " does not match the case grid " +
                                  std::to_string(grid.global_nx()) + "x" + std::to_string(grid.global_ny()));
     solver.set_grid_lines(xl, yl);
-    Field2D eddy(grid);
-    const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model, &eddy));
-    const bool eddy_stored = std::find(h.absent.begin(), h.absent.end(), "eddy_viscosity") == h.absent.end();
+    const CheckpointHeader h = read_checkpoint(grid, checkpoint, checkpoint_fields(model));
+    const bool eddy_read = std::find(h.absent.begin(), h.absent.end(), "eddy_viscosity") == h.absent.end();
     solver.restore(h.step, h.time, h.dt_previous, h.implicit_diffusion);  // the counters; no ghost is filled
     if (const auto w = read_checkpoint_array(checkpoint, "flow_previous_grid_velocity"); w && w->size() == 2)
         solver.set_previous_grid_velocity({(*w)[0], (*w)[1]});
@@ -89,7 +87,7 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     model.carrier().restored(carrier_arrays);
     model.carrier().place(solver.time());
     solver.refresh_ghosts();  // a hole's faces move with its restored body
-    if (KEpsilon* turbulence = model.turbulence()) turbulence->restored(eddy_stored ? &eddy : nullptr);
+    if (KEpsilon* turbulence = model.turbulence()) turbulence->restored(eddy_read);
 }
 
 }  // namespace chute

@@ -58,21 +58,20 @@ void KEpsilon::set_initial_condition() {
     restored();
 }
 
-void KEpsilon::restored(const Field2D* eddy_cells) {
+void KEpsilon::restored(bool eddy_cells_read) {
     carrier_.locate_walls();
     was_fluid_ = carrier_.fluid_cells();
     set_ghosts(k_, &k_in_);
     set_ghosts(eps_, &eps_in_);
     sample_walls();
-    refresh_eddy_viscosity(eddy_cells);
+    refresh_eddy_viscosity(eddy_cells_read);
 }
 
 void KEpsilon::shifted() {
     carrier_.locate_walls();
     set_ghosts(k_, &k_in_);
     set_ghosts(eps_, &eps_in_);
-    const Field2D cells = flow_.eddy_viscosity().cell;
-    refresh_eddy_viscosity(&cells);
+    refresh_eddy_viscosity(true);
 }
 
 // The log law at the carrier's samples beside the bodies (y = the sample's distance from the surface):
@@ -287,7 +286,7 @@ std::string KEpsilon::too_many_substeps(double needed, double dt, double max_nu_
 
 // nu_t = C_mu k^2 / eps in the fluid, 0 inside bodies, at least the wall eddy viscosity in the immersed
 // near-wall band; corners average their four cells, except on wall sides: the wall-function value there.
-void KEpsilon::refresh_eddy_viscosity(const Field2D* cells) {
+void KEpsilon::refresh_eddy_viscosity(bool cells_kept) {
     EddyViscosity& e = flow_.eddy_viscosity();
     const Field2D& fluid = carrier_.fluid_cells();
     const double nu = settings_.viscosity;
@@ -295,12 +294,13 @@ void KEpsilon::refresh_eddy_viscosity(const Field2D* cells) {
     for (int j = -kGhost; j < ny + kGhost; ++j)
         for (int i = -kGhost; i < nx + kGhost; ++i)
             model_nu_t_(i, j) = fluid(i, j) != 0.0 ? C::c_mu * k_(i, j) * k_(i, j) / eps_(i, j) : 0.0;
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) e.cell(i, j) = cells ? (*cells)(i, j) : model_nu_t_(i, j);
+    if (!cells_kept)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) e.cell(i, j) = model_nu_t_(i, j);
     // Beside an immersed surface the near-wall band takes at least the wall's eddy viscosity; a body-fitted
     // hole's sides are walls like the domain's (their corners below).
     const SolidCells* holes = flow_.solid_cells();
-    if (!holes && !cells)
+    if (!holes && !cells_kept)
         for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
     set_ghosts(e.cell, nullptr);  // zero gradient across every domain side
     for (int j = 0; j <= ny; ++j)

@@ -46,9 +46,9 @@ public:
     void set_initial_condition();
     // Advance k and eps over the flow step just taken (dt), then refresh nu_t.
     void update(double dt);
-    // After k and eps were read from a checkpoint, with the flow's cell eddy viscosity the last step ended with
-    // when the checkpoint has it (the cells beside an immersed surface keep the wall's values of that step).
-    void restored(const Field2D* eddy_cells = nullptr);
+    // After k and eps were read from a checkpoint; `eddy_cells_read`: the flow's cell eddy viscosity too, as the
+    // last step left it (the cells beside an immersed surface keep the wall's values of that step).
+    void restored(bool eddy_cells_read = false);
     // After the grid moved by whole cells (FlowSolver::shift_one_cell moved k, eps and the eddy viscosity along):
     // the walls located on the new lines, the ghosts and the corner eddy viscosity set again.
     void shifted();
@@ -90,9 +90,9 @@ private:
     // gradient on the others; periodic sides by the exchange.
     void set_ghosts(Field2D& f, const double* inflow) const;
     std::vector<WallCell> wall_cells() const;  // domain walls and immersed surfaces: this rank's
-    // nu_t from k and eps, the cells beside an immersed surface at least the wall's (or `cells`, the flow's cell
-    // eddy viscosity as a step left it), then the ghosts and the corners.
-    void refresh_eddy_viscosity(const Field2D* cells = nullptr);
+    // nu_t from k and eps, the flow's cell eddy viscosity from it with the cells beside an immersed surface at least
+    // the wall's (unless `cells_kept`: the cells as a step left them, read or moved), then the ghosts and corners.
+    void refresh_eddy_viscosity(bool cells_kept = false);
     int substeps_for(double dt) const;
     std::string too_many_substeps(double needed, double dt, double max_nu_t) const;
 

@@ -9,6 +9,13 @@ namespace chute {
 
 Axis::Axis(std::vector<double> lines, bool periodic) : periodic_(periodic) { set_lines(std::move(lines)); }
 
+bool uniform_axis(const Axis& axis) {
+    const double h = axis.length() / axis.cells();
+    for (int k = 0; k < axis.cells(); ++k)
+        if (std::abs(axis.width(k) - h) > 1e-10 * h) return false;
+    return true;
+}
+
 void Axis::set_lines(std::vector<double> lines) {
     if (lines.size() < 2) throw std::invalid_argument("an axis needs at least one cell");
     for (std::size_t k = 1; k < lines.size(); ++k)

@@ -34,6 +34,10 @@ private:
     bool periodic_ = false;
 };
 
+// All cells of the axis equally wide (to 1e-10 relative): a transform can run along it (core/solvers/direct_poisson),
+// a window can move along it by whole cells (run/following_frame).
+bool uniform_axis(const Axis& axis);
+
 // Line generators for the case file's `spacing` choices.
 std::vector<double> uniform_lines(double start, double end, int cells);
 // Lines clustered towards both ends (tanh stretching of strength beta > 0; beta -> 0 is uniform).

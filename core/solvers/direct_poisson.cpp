@@ -78,13 +78,6 @@ void solve_dense(int n, double* A, double* b) {
 
 }  // namespace
 
-bool uniform_axis(const Axis& axis) {
-    const double h = axis.length() / axis.cells();
-    for (int k = 0; k < axis.cells(); ++k)
-        if (std::abs(axis.width(k) - h) > 1e-10 * h) return false;
-    return true;
-}
-
 int DirectPoissonSolver::transform_axis(const Grid& grid) {
     const bool ux = uniform_axis(grid.x_axis()), uy = uniform_axis(grid.y_axis());
     // A periodic axis carrying the tridiagonal systems needs 3 cells for Sherman-Morrison's corners.

@@ -29,9 +29,6 @@ struct fftw_plan_s;
 
 namespace chute {
 
-// All cells of the axis equally wide (to 1e-10 relative): a transform can run along it.
-bool uniform_axis(const Axis& axis);
-
 class DirectPoissonSolver {
 public:
     // The axis (0: x, 1: y) the transform would run along on this grid, or -1 if none: neither axis uniform.
