@@ -200,6 +200,7 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
         const double t_next = impacts.size() > 1 ? impacts[1].t : 1e300;
         o.runout = impacts.size() > 1 ? impacts[1].x - impacts[0].x : std::nan("");
         const Series s = read_body_series(dir / "body_block.csv");
+        o.travel = std::hypot(impacts[0].x - s.x.front(), impacts[0].y - s.y.front()) / o.size;
         for (std::size_t k = 0; k < s.t.size(); ++k)
             if (s.t[k] > impacts[0].t && s.t[k] < t_next)
                 o.rebound_height = std::max(o.rebound_height, s.y[k] - impacts[0].y);

@@ -1,5 +1,6 @@
 #include "calibration.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -52,6 +53,42 @@ LumpedModelConfig model_of(double size, double density, const BlockFluid& f, dou
     return m;
 }
 
+// kappa_n(travel) = kappa_inf + (kappa_0 - kappa_inf) exp(-travel / L) through the bed runs' own kappa_n by least
+// squares: for each L the two kappas are a linear fit; L by a scan over 0.1-100 block sizes refined by golden
+// section. Needs three runs after falls of different lengths (two would fit any L); returns false otherwise.
+bool fit_wake_growth(const std::vector<CalibrationPoint*>& beds, WetRebound& law) {
+    std::vector<double> travels;
+    for (const CalibrationPoint* p : beds)
+        if (std::none_of(travels.begin(), travels.end(), [&](double s) { return std::abs(s - p->cfd.travel) < 0.1; }))
+            travels.push_back(p->cfd.travel);
+    if (travels.size() < 3) return false;
+    struct Fit {
+        double kappa_inf, kappa_0, residual;
+    };
+    const auto fit = [&](double L) {
+        double s11 = 0, s12 = 0, s22 = 0, b1 = 0, b2 = 0;  // normal equations for (kappa_inf, kappa_0 - kappa_inf)
+        for (const CalibrationPoint* p : beds) {
+            const double e = std::exp(-p->cfd.travel / L);
+            s11 += 1, s12 += e, s22 += e * e, b1 += p->kappa, b2 += e * p->kappa;
+        }
+        const double det = s11 * s22 - s12 * s12;
+        const double a = (s22 * b1 - s12 * b2) / det, d = (s11 * b2 - s12 * b1) / det;
+        double r = 0.0;
+        for (const CalibrationPoint* p : beds) r += std::pow(a + d * std::exp(-p->cfd.travel / L) - p->kappa, 2);
+        return Fit{a, a + d, r};
+    };
+    double best_log = std::log(0.1);
+    for (double lg = std::log(0.1); lg <= std::log(100.0); lg += 0.02)
+        if (fit(std::exp(lg)).residual < fit(std::exp(best_log)).residual) best_log = lg;
+    const double L = std::exp(
+        golden_minimum([&](double lg) { return fit(std::exp(lg)).residual; }, best_log - 0.02, best_log + 0.02));
+    const Fit best = fit(L);
+    law.kappa_n = best.kappa_inf;
+    law.kappa_n_start = best.kappa_0;
+    law.wake_length = L;
+    return true;
+}
+
 }  // namespace
 
 double drag_coefficient_from_terminal_speed(double terminal_speed, double size, double density, const BlockFluid& f) {
@@ -78,7 +115,7 @@ LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, doub
     // The law's rebound at the CFD's impact, then the flight to the next impact.
     const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
     const Restitution e = wet_restitution(law, o.normal_restitution, o.tangential_restitution,
-                                          impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity));
+                                          impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel);
     const Vec2 after = e.tangential * vt * tangent - e.normal * vn * normal;
     HazardBlock block;
     block.size = o.size;
@@ -148,6 +185,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
                 [&](double kappa) { return measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)); }, target, 0.05,
                 limit);
         }
+        if (normal && fit_wake_growth(used, k.wet_rebound)) continue;
         const double best = golden_minimum(
             [&](double kappa) {
                 double sum = 0.0;
@@ -161,6 +199,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         k.wet_rebound = with(k.wet_rebound, normal, best);
     }
     for (CalibrationPoint& p : out.points) {
+        p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel);
         const LumpedBounce b = lumped_bounce(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound);
         p.lumped_height = b.height;
         p.lumped_runout = b.runout;
@@ -176,12 +215,13 @@ double percent(double model, double cfd) { return 100.0 * (model - cfd) / cfd; }
 
 std::string calibration_points_csv(const Calibration& c) {
     std::string t =
-        "run,use,slope_deg,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa\n";
+        "run,use,slope_deg,travel,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa,"
+        "law_kappa\n";
     for (const CalibrationPoint& p : c.points)
-        t += printf_text("%s,%s,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g\n", p.cfd.name.c_str(),
-                         p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g\n", p.cfd.name.c_str(),
+                         p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.travel,
                          p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
-                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa);
+                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.law_kappa);
     return t;
 }
 
@@ -189,22 +229,29 @@ std::string calibration_markdown(const Calibration& c) {
     const CalibrationFile& k = c.constants;
     std::string t = printf_text(
         "Block %.3g m, %.4g kg/m^3. Free fall: terminal speed %.4f m/s -> C_D = %.4f; early speed up to %.3f s -> "
-        "C_a = %.4f (rms misfit %.3g m/s). Bounces: kappa_n = %.4f, kappa_t = %.4f, beta = %.3g.\n\n",
+        "C_a = %.4f (rms misfit %.3g m/s). Bounces: kappa_n = %.4f, kappa_t = %.4f, beta = %.3g",
         k.block_size, k.block_density, c.terminal_speed, k.drag_coefficient, c.early_window, k.added_mass_coefficient,
         c.early_rms, k.wet_rebound.kappa_n, k.wet_rebound.kappa_t, k.wet_rebound.beta);
-    t += "| run | use | slope | impact (along, normal) m/s | St | height CFD | height lumped | diff | runout CFD | "
-         "runout lumped | diff | own kappa |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    t += k.wet_rebound.wake_length > 0.0
+             ? printf_text(
+                   "; the wake's growth: kappa_n_start = %.4f, wake_length = %.3f block sizes (kappa_n(travel) = "
+                   "kappa_n + (kappa_n_start - kappa_n) exp(-travel / wake_length)).\n\n",
+                   k.wet_rebound.kappa_n_start, k.wet_rebound.wake_length)
+             : std::string(".\n\n");
+    t += "| run | use | slope | travel (sizes) | impact (along, normal) m/s | St | height CFD | height lumped | diff | "
+         "runout CFD | runout lumped | diff | own kappa | law's kappa_n |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
         const std::string runout = p.cfd.on_bed()
                                        ? "- | - | -"
                                        : printf_text("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
                                                      percent(p.lumped_runout, p.cfd.runout));
-        t += printf_text("| %s | %s | %.0f deg | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s |\n",
-                         p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
-                         p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.impact_velocity.x(),
-                         p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height, p.lumped_height,
-                         percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
-                         std::isfinite(p.kappa) ? printf_text("%.4f", p.kappa).c_str() : "-");
+        t += printf_text(
+            "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %.4f |\n",
+            p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+            p.cfd.travel, p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
+            p.lumped_height, percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
+            std::isfinite(p.kappa) ? printf_text("%.4f", p.kappa).c_str() : "-", p.law_kappa);
     }
     return t;
 }

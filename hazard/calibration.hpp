@@ -7,7 +7,9 @@
 //        0.8 v_t (a window, not the first step: the run's first step is the CFL limit of water at rest);
 //   kappa_n  from bounces on a bed: the lumped block leaves the bed at the CFD's impact with the wet law's
 //        velocity and flies under the model; kappa_n makes its bounce height the CFD's (one value per run,
-//        then their mean, weighted alike);
+//        then their least-squares fit, weighted alike). With three or more bed runs after different falls, the
+//        wake's growth too (wet_rebound.hpp): kappa_n(travel) = kappa_n + (kappa_n_start - kappa_n)
+//        exp(-travel / wake_length) through the runs' own values, by least squares;
 //   kappa_t  from bounces on slopes: with that kappa_n, kappa_t makes the runout to the next impact the CFD's.
 // Runs marked `check` are not fitted to: the calibrated model's bounce height and runout are compared with
 // theirs (the acceptance: within 15 %).
@@ -36,6 +38,7 @@ struct BounceObservation {
     bool fitted = true;           // false: a check
     double slope_angle = 0.0;     // rad: gravity's angle from the bed's normal (0: a horizontal bed)
     Vec2 impact_velocity;         // at the first impact
+    double travel = 0.0;          // block sizes from the release to the first impact
     double rebound_height = 0.0;  // the centre's largest rise out of the bed between the first two impacts
     double runout = 0.0;          // along the bed from the first impact to the second (NaN: no second one)
     double size = 0.0, density = 0.0;
@@ -49,8 +52,9 @@ struct BlockFluid {
 
 struct CalibrationPoint {
     BounceObservation cfd;
-    double stokes = 0.0;  // of the first impact
-    double kappa = 0.0;   // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
+    double stokes = 0.0;     // of the first impact
+    double kappa = 0.0;      // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
+    double law_kappa = 0.0;  // the calibrated law's kappa_n at this run's travel
     double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
 };
 

@@ -21,6 +21,8 @@ const std::vector<CaseKey>& calibration_keys() {
         {.path = "model.kappa_n", .type = K::number, .required = true, .min = above(0.0), .max = at_most(2.0)},
         {.path = "model.kappa_t", .type = K::number, .required = true, .min = above(0.0), .max = at_most(2.0)},
         {.path = "model.beta", .type = K::number, .required = true, .min = at_least(0.0)},
+        {.path = "model.kappa_n_start", .type = K::number, .min = above(0.0), .max = at_most(2.0)},
+        {.path = "model.wake_length", .type = K::number, .default_value = "0.0", .min = at_least(0.0)},
         {.path = "block", .type = K::section, .required = true},
         {.path = "block.size", .type = K::number, .required = true, .min = above(0.0), .units = "m"},
         {.path = "block.density", .type = K::number, .required = true, .min = above(0.0), .units = "kg/m^3"},
@@ -51,6 +53,9 @@ CalibrationFile read_calibration_file(const std::filesystem::path& file) {
     c.wet_rebound.kappa_n = r.number("model.kappa_n");
     c.wet_rebound.kappa_t = r.number("model.kappa_t");
     c.wet_rebound.beta = r.number("model.beta");
+    c.wet_rebound.wake_length = r.number("model.wake_length");
+    c.wet_rebound.kappa_n_start =
+        r.present("model.kappa_n_start") ? r.number("model.kappa_n_start") : c.wet_rebound.kappa_n;
     c.block_size = r.number("block.size");
     c.block_density = r.number("block.density");
     c.date = r.string("provenance.date");
@@ -74,6 +79,10 @@ void write_calibration_file(const std::filesystem::path& file, const Calibration
     y << YAML::Key << "kappa_n" << YAML::Value << c.wet_rebound.kappa_n;
     y << YAML::Key << "kappa_t" << YAML::Value << c.wet_rebound.kappa_t;
     y << YAML::Key << "beta" << YAML::Value << c.wet_rebound.beta;
+    if (c.wet_rebound.wake_length > 0.0) {
+        y << YAML::Key << "kappa_n_start" << YAML::Value << c.wet_rebound.kappa_n_start;
+        y << YAML::Key << "wake_length" << YAML::Value << c.wet_rebound.wake_length;
+    }
     y << YAML::EndMap;
     y << YAML::Key << "block" << YAML::Value << YAML::Flow << YAML::BeginMap;
     y << YAML::Key << "size" << YAML::Value << c.block_size;

@@ -112,7 +112,7 @@ const Schema& schema() {
             {.path = "model.calibration",
              .type = K::string,
              .meaning = "A calibration file written by `chute calibrate` (relative to the case file): its C_D, C_a, "
-                        "kappa_n, kappa_t and beta are the defaults of the keys below."},
+                        "kappa_n, kappa_t, beta and the wake's growth are the defaults of the keys below."},
             {.path = "model.drag_coefficient",
              .type = K::number,
              .default_value = "2.0",
@@ -131,7 +131,25 @@ const Schema& schema() {
              .default_doc = "calibration's, else `1.0`",
              .min = above(0.0),
              .max = at_most(2.0),
-             .meaning = "Wet normal restitution over the viscous law's: e_n = Rn kappa_n exp(-beta/St)."},
+             .meaning = "Wet normal restitution over the viscous law's, after a developed wake: e_n = Rn kappa_n "
+                        "exp(-beta/St) (hazard/wet_rebound.hpp)."},
+            {.path = "model.kappa_n_start",
+             .type = K::number,
+             .default_value = "1.0",
+             .default_doc = "calibration's, else `1.0`",
+             .min = above(0.0),
+             .max = at_most(2.0),
+             .meaning = "kappa_n of an impact right after the flight began (no wake yet); used when "
+                        "`model.wake_length` > 0."},
+            {.path = "model.wake_length",
+             .type = K::number,
+             .default_value = "0.0",
+             .default_doc = "calibration's, else `0.0`",
+             .min = at_least(0.0),
+             .units = "block sizes",
+             .meaning = "Travel over which the wake grows: kappa_n(travel) = kappa_n + (kappa_n_start - kappa_n) "
+                        "exp(-travel / wake_length), travel in block sizes since the flight began in water (release, "
+                        "water entry, last impact, end of a slide). 0: kappa_n at every impact."},
             {.path = "model.kappa_t",
              .type = K::number,
              .default_value = "1.0",
@@ -283,6 +301,10 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
     c.settings.wet_rebound.kappa_n = model_number(r, "model.kappa_n", cal, cal ? cal->wet_rebound.kappa_n : 0.0);
     c.settings.wet_rebound.kappa_t = model_number(r, "model.kappa_t", cal, cal ? cal->wet_rebound.kappa_t : 0.0);
     c.settings.wet_rebound.beta = model_number(r, "model.beta", cal, cal ? cal->wet_rebound.beta : 0.0);
+    c.settings.wet_rebound.kappa_n_start =
+        model_number(r, "model.kappa_n_start", cal, cal ? cal->wet_rebound.kappa_n_start : 0.0);
+    c.settings.wet_rebound.wake_length =
+        model_number(r, "model.wake_length", cal, cal ? cal->wet_rebound.wake_length : 0.0);
     c.settings.sliding_speed = r.number("model.sliding_speed");
     c.settings.end_time = r.number("model.end_time");
     c.settings.relative_tolerance = r.number("model.relative_tolerance");

@@ -30,11 +30,15 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
     std::string t = printf_text(
         "hazard '%s': %ld trajectories over %zu segments in %.2f s on %d rank(s) (%.0f per s)\n", c.name.c_str(),
         s.trajectories, profile.segments().size(), seconds, ranks, s.trajectories / std::max(seconds, 1e-9));
-    t += printf_text("  water level %s; model C_D %.4g, C_a %.4g, kappa_n %.4g, kappa_t %.4g, beta %.4g%s\n",
-                     c.water_level > -1e29 ? printf_text("%.6g m", c.water_level).c_str() : "none (dry)",
-                     c.settings.drag_coefficient, c.settings.added_mass_coefficient, c.settings.wet_rebound.kappa_n,
-                     c.settings.wet_rebound.kappa_t, c.settings.wet_rebound.beta,
-                     c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
+    const WetRebound& law = c.settings.wet_rebound;
+    t += printf_text(
+        "  water level %s; model C_D %.4g, C_a %.4g, kappa_n %.4g%s, kappa_t %.4g, beta %.4g%s\n",
+        c.water_level > -1e29 ? printf_text("%.6g m", c.water_level).c_str() : "none (dry)",
+        c.settings.drag_coefficient, c.settings.added_mass_coefficient, law.kappa_n,
+        law.wake_length > 0.0
+            ? printf_text(" (%.4g with no wake, over %.3g block sizes)", law.kappa_n_start, law.wake_length).c_str()
+            : "",
+        law.kappa_t, law.beta, c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
     t += printf_text("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
                      s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
     t += printf_text("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,

@@ -119,7 +119,8 @@ struct TrajectoryIntegrator::Run {
     double radius, mass, inertia;
     Flight flight;
     double t = 0.0;
-    double friction = 0.0;  // tan of the friction angle, drawn when a slide starts or meets a new material
+    double friction = 0.0;             // tan of the friction angle, drawn when a slide starts or meets a new material
+    Vec2 flight_start = Vec2::Zero();  // where the flight began (its wake with it): the wet rebound's travel
     TrajectoryResult out;
 
     void finish(TrajectoryEnd end, const Vec2& x, const Vec2& v) {
@@ -166,6 +167,7 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             {},
             0.0,
             0.0,
+            Vec2::Zero(),
             {}};
     run.flight.self = this;
     TrajectoryResult& out = run.out;
@@ -223,6 +225,7 @@ void TrajectoryIntegrator::fly(Run& run, const Vec2& from, const Vec2& v, double
     // At the water level (`crossing`) the medium is the one the block is going into.
     run.flight.model = (crossing ? v.y() < 0.0 : profile_.wet(from.y())) ? run.wet : run.dry;
     run.flight.spin = spin;
+    run.flight_start = from;
     // CVODE finds an impact where the clearance changes sign, so a flight must start strictly above the ground:
     // off an impact or a vertex it starts on it (to round-off), and near a concave vertex the next segment may rise
     // across its path at once, inside CVODE's first step. Near a vertex ahead (what the first steps, under 10 ms,
@@ -283,7 +286,10 @@ bool TrajectoryIntegrator::impact(Run& run, const Vec2& x, const Vec2& v) {
     e.wet = profile_.wet(x.y());
     e.stokes =
         e.wet ? impact_stokes_number(run.block.density, std::abs(vn), run.block.size, water_.viscosity) : infinity;
-    const Restitution r = e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes) : Restitution{rn, rt};
+    // The wake grew over the flight's chord (a flight is nearly straight in water, at about its terminal speed).
+    e.travel = (x - run.flight_start).norm() / run.block.size;
+    const Restitution r =
+        e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel) : Restitution{rn, rt};
     e.normal_restitution = r.normal;
     e.tangential_restitution = r.tangential;
     e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;

@@ -66,6 +66,7 @@ struct Impact {
     Vec2 position = Vec2::Zero(), velocity_before = Vec2::Zero(), velocity_after = Vec2::Zero();
     bool wet = false;
     double stokes = 0.0;  // infinite in air
+    double travel = 0.0;  // block sizes from where the flight began (wet_rebound.hpp)
     double normal_restitution = 0.0, tangential_restitution = 0.0;
 };
 

@@ -225,6 +225,82 @@ TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
     }
 }
 
+// The wake's growth (hazard/wet_rebound.hpp) is recovered from bed bounces the model made itself after falls of
+// 2-12 block sizes at different speeds: kappa_n 0.62 once the wake is developed, 1.0 with no wake, over 3 sizes.
+TEST(HazardCalibration, RecoversTheWakeGrowthOfItsOwnModel) {
+    const BlockFluid fluid;
+    const double size = 0.3, density = 2500.0;
+    const BerangerFreeFall closed = beranger_free_fall([&] {
+        LumpedModelConfig m;
+        m.volume = size * size * size;
+        m.mass = density * m.volume;
+        m.frontal_area = size * size;
+        m.fluid_density = fluid.fluid_density;
+        m.drag_coefficient = 1.8;
+        m.added_mass_coefficient = 0.9;
+        return m;
+    }());
+    FreeFallObservation fall;
+    for (double t = 0.0; t <= 6.0; t += 0.002) fall.t.push_back(t), fall.speed.push_back(closed.speed(t));
+    fall.terminal_speed = closed.terminal_speed;
+    WetRebound truth;
+    truth.kappa_n = 0.62, truth.kappa_n_start = 1.0, truth.wake_length = 3.0;
+    std::vector<BounceObservation> bounces;
+    for (const auto& [travel, speed] :
+         std::vector<std::pair<double, double>>{{2, 1.5}, {4.5, 1.9}, {8, 2.0}, {12, 2.1}}) {
+        BounceObservation o;
+        o.name = "bed";
+        o.impact_velocity = Vec2(0.0, -speed);
+        o.travel = travel;
+        o.size = size, o.density = density;
+        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
+        bounces.push_back(o);
+    }
+    const Calibration c = calibrate(fall, size, density, bounces, fluid);
+    EXPECT_NEAR(c.constants.wet_rebound.kappa_n, 0.62, 1e-3);
+    EXPECT_NEAR(c.constants.wet_rebound.kappa_n_start, 1.0, 1e-3);
+    EXPECT_NEAR(c.constants.wet_rebound.wake_length, 3.0, 1e-2);
+    for (const CalibrationPoint& p : c.points) {
+        EXPECT_NEAR(p.law_kappa, truth.normal_kappa(p.cfd.travel), 1e-4);
+        EXPECT_NEAR(p.lumped_height, p.cfd.rebound_height, 1e-3 * p.cfd.rebound_height);
+    }
+    // A calibration file keeps the law.
+    const auto file = std::filesystem::temp_directory_path() / "chute_wake_calibration.yaml";
+    write_calibration_file(file, c.constants);
+    const CalibrationFile back = read_calibration_file(file);
+    EXPECT_NEAR(back.wet_rebound.wake_length, c.constants.wet_rebound.wake_length, 1e-5);  // 6 digits
+    EXPECT_NEAR(back.wet_rebound.kappa_n_start, c.constants.wet_rebound.kappa_n_start, 1e-5);
+    std::filesystem::remove(file);
+}
+
+// A block dropped in water onto flat ground takes the wake's kappa_n for its fall (the travel since its flight
+// began, in block sizes), and the next impact for the bounce's own travel.
+TEST(HazardCalibration, ImpactTakesTheKappaOfItsTravel) {
+    const SlopeProfile flat({Vec2(-50.0, 0.0), Vec2(50.0, 0.0)}, {0}, 100.0);  // all under water
+    Material ground;
+    ground.normal_restitution = Distribution::fixed(0.8);
+    ground.tangential_restitution = Distribution::fixed(0.8);
+    TrajectorySettings settings;
+    settings.wet_rebound.kappa_n = 0.6, settings.wet_rebound.kappa_n_start = 1.1,
+    settings.wet_rebound.wake_length = 4.0;
+    settings.end_time = 3.0;
+    TrajectoryIntegrator integrator(flat, {ground}, WaterProperties{}, settings);
+    HazardBlock block;
+    block.size = 0.3, block.density = 2500.0;
+    std::mt19937_64 rng(0);
+    const TrajectoryResult r = integrator.run(block, Vec2(0.0, 1.2), Vec2::Zero(), {}, rng);
+    ASSERT_GE(r.impacts.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Impact& e = r.impacts[i];
+        const Vec2 from = i == 0 ? Vec2(0.0, 1.2) : r.impacts[0].position;
+        EXPECT_NEAR(e.travel, (e.position - from).norm() / block.size, 1e-12);
+        EXPECT_NEAR(e.normal_restitution,
+                    0.8 * settings.wet_rebound.normal_kappa(e.travel) * std::exp(-35.0 / e.stokes), 1e-12);
+    }
+    EXPECT_NEAR(r.impacts[0].travel, 4.0, 1e-6);                                  // 1.2 m of fall
+    EXPECT_GT(r.impacts[1].normal_restitution, r.impacts[0].normal_restitution);  // a short bounce: less wake
+}
+
 // The shipped calibration (data/calibration/study_block.yaml) reads, and a hazard case takes its constants.
 TEST(HazardCalibration, ShippedCalibrationIsUsedByTheExample) {
     const CalibrationFile f =
