@@ -284,7 +284,8 @@ TEST(HazardCalibration, ImpactTakesTheKappaOfItsTravel) {
     settings.wet_rebound.kappa_n = 0.6, settings.wet_rebound.kappa_n_start = 1.1,
     settings.wet_rebound.wake_length = 4.0;
     settings.end_time = 3.0;
-    TrajectoryIntegrator integrator(flat, {ground}, WaterProperties{}, settings);
+    const std::vector<Material> materials{ground};  // the integrator keeps a reference
+    TrajectoryIntegrator integrator(flat, materials, WaterProperties{}, settings);
     HazardBlock block;
     block.size = 0.3, block.density = 2500.0;
     std::mt19937_64 rng(0);
