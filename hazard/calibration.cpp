@@ -55,7 +55,9 @@ LumpedModelConfig model_of(double size, double density, const BlockFluid& f, dou
 
 // kappa_n(travel) = kappa_inf + (kappa_0 - kappa_inf) exp(-travel / L) through the bed runs' own kappa_n by least
 // squares: for each L the two kappas are a linear fit; L by a scan over 0.1-100 block sizes refined by golden
-// section. Needs three runs after falls of different lengths (two would fit any L); returns false otherwise.
+// section. Needs three runs after falls of different lengths (two would fit any L); returns false otherwise, and
+// when the runs show no growth the law can carry (L at an end of the scan, a kappa outside [0.05, 2]): then
+// kappa_n is one constant, as before.
 bool fit_wake_growth(const std::vector<CalibrationPoint*>& beds, WetRebound& law) {
     std::vector<double> travels;
     for (const CalibrationPoint* p : beds)
@@ -77,12 +79,18 @@ bool fit_wake_growth(const std::vector<CalibrationPoint*>& beds, WetRebound& law
         for (const CalibrationPoint* p : beds) r += std::pow(a + d * std::exp(-p->cfd.travel / L) - p->kappa, 2);
         return Fit{a, a + d, r};
     };
-    double best_log = std::log(0.1);
-    for (double lg = std::log(0.1); lg <= std::log(100.0); lg += 0.02)
-        if (fit(std::exp(lg)).residual < fit(std::exp(best_log)).residual) best_log = lg;
+    const double lo = std::log(0.1), hi = std::log(100.0);
+    double best_log = std::nan(""), best_residual = std::numeric_limits<double>::infinity();
+    for (double lg = lo; lg <= hi; lg += 0.02)
+        if (const double r = fit(std::exp(lg)).residual; std::isfinite(r) && r < best_residual)
+            best_log = lg, best_residual = r;
+    if (!std::isfinite(best_log)) return false;
     const double L = std::exp(
         golden_minimum([&](double lg) { return fit(std::exp(lg)).residual; }, best_log - 0.02, best_log + 0.02));
     const Fit best = fit(L);
+    const auto usable = [](double kappa) { return kappa >= 0.05 && kappa <= 2.0; };
+    if (!usable(best.kappa_inf) || !usable(best.kappa_0) || best_log <= lo + 0.05 || best_log >= hi - 0.05)
+        return false;
     law.kappa_n = best.kappa_inf;
     law.kappa_n_start = best.kappa_0;
     law.wake_length = L;

@@ -187,11 +187,9 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
 namespace chute {
 namespace {
 
-// The calibration's fits recover the constants of observations made by the lumped model itself: a free fall
-// from the closed form with C_D 1.8 and C_a 0.9, bed bounces made with kappa_n 0.7 (hazard/calibration.hpp).
-TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
-    const BlockFluid fluid;
-    const double size = 0.3, density = 2500.0;
+// A free fall observed from the lumped model's closed form with C_D 1.8 and C_a 0.9, 6 s (its last 0.5 s at the
+// terminal speed).
+FreeFallObservation closed_form_fall(const BlockFluid& fluid, double size, double density) {
     LumpedModelConfig m;
     m.volume = size * size * size;
     m.mass = density * m.volume;
@@ -202,7 +200,16 @@ TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
     const BerangerFreeFall closed = beranger_free_fall(m);
     FreeFallObservation fall;
     for (double t = 0.0; t <= 6.0; t += 0.002) fall.t.push_back(t), fall.speed.push_back(closed.speed(t));
-    fall.terminal_speed = closed.terminal_speed;  // the observation's last 0.5 s, at the terminal speed
+    fall.terminal_speed = closed.terminal_speed;
+    return fall;
+}
+
+// The calibration's fits recover the constants of observations made by the lumped model itself: a free fall
+// from the closed form with C_D 1.8 and C_a 0.9, bed bounces made with kappa_n 0.7 (hazard/calibration.hpp).
+TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
+    const BlockFluid fluid;
+    const double size = 0.3, density = 2500.0;
+    const FreeFallObservation fall = closed_form_fall(fluid, size, density);
     WetRebound truth;
     truth.kappa_n = 0.7;
     std::vector<BounceObservation> bounces;
@@ -230,19 +237,7 @@ TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
 TEST(HazardCalibration, RecoversTheWakeGrowthOfItsOwnModel) {
     const BlockFluid fluid;
     const double size = 0.3, density = 2500.0;
-    const BerangerFreeFall closed = beranger_free_fall([&] {
-        LumpedModelConfig m;
-        m.volume = size * size * size;
-        m.mass = density * m.volume;
-        m.frontal_area = size * size;
-        m.fluid_density = fluid.fluid_density;
-        m.drag_coefficient = 1.8;
-        m.added_mass_coefficient = 0.9;
-        return m;
-    }());
-    FreeFallObservation fall;
-    for (double t = 0.0; t <= 6.0; t += 0.002) fall.t.push_back(t), fall.speed.push_back(closed.speed(t));
-    fall.terminal_speed = closed.terminal_speed;
+    const FreeFallObservation fall = closed_form_fall(fluid, size, density);
     WetRebound truth;
     truth.kappa_n = 0.62, truth.kappa_n_start = 1.0, truth.wake_length = 3.0;
     std::vector<BounceObservation> bounces;
