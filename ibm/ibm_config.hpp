@@ -12,6 +12,7 @@ enum class DeltaKernel { roma3, peskin4, roma3_smoothed };
 struct IbmConfig {
     DeltaKernel kernel = DeltaKernel::roma3_smoothed;  // Yang et al. 2009: no cell-crossing ripple
     int forcing_iterations = 10;                       // multi-direct forcing (Breugem 2012)
+    int projection_passes = 1;                         // forcing and projection per step (run/step.cpp)
     double marker_spacing = 1.0;                       // in grid cells
     double retraction = 0.43;                          // markers moved inwards by this many cells (DFG 2D-1 drag)
     int volume_ramp = 2;                               // cells over which the volume forcing fades in (0: a switch)

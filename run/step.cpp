@@ -32,7 +32,9 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     // Strong coupling where a free body's velocity changes at once (its first step, an impact): while its update
     // still moves, force u^{n+1} towards the corrected motion and project again. One pass sets only part of the
     // fluid the body drives in motion (its added mass); the passes complete it (rigidbody/free_bodies.hpp).
-    while (free_bodies.another_pass(stats.coupling_passes)) {
+    // numerics.ibm.projection_passes asks for passes in every step: each leaves less slip after the projection.
+    const int passes = model.config().ibm.projection_passes;
+    while (free_bodies.another_pass(stats.coupling_passes) || stats.coupling_passes < passes) {
         {
             StageTimer::Scope timed(timer, "bodies");
             carrier.impose(flow.reopen(), dt);
