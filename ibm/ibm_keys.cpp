@@ -37,8 +37,8 @@ std::vector<CaseKey> ibm_keys() {
                     "feels that slip (the study's block fixed in a 2.32 m/s stream: drag 1284.6 N with 1 pass, "
                     "1332 N with 16, against 1338 N when it moves through still water: its Galilean pair within "
                     "0.5 %, docs/validation.md), but a moving body's force ripples more at the cell-crossing "
-                    "frequency (8 passes: 1.7 % against 0.9 %), and each pass costs a pressure solve (16 passes: "
-                    "3.4 times the step)."},
+                    "frequency (8 passes: 1.7 % against 0.9 %), and each pass costs a pressure solve (16 passes: the "
+                    "pair's runs took 3.1 times as long)."},
         {.path = "numerics.ibm.marker_spacing",
          .type = K::number,
          .default_value = "1.0",
