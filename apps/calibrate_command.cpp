@@ -40,8 +40,9 @@ const std::vector<chute::CaseKey>& spec_keys() {
          .type = K::choice,
          .default_value = "fit",
          .choices = {"fit", "check"},
-         .meaning = "fit: the constants are fitted to it (a horizontal bed: kappa_n; a slope: kappa_t); check: "
-                    "only compared with the calibrated model."},
+         .meaning = "fit: the constants are fitted to it (a horizontal bed: kappa_n and the wake's growth; a slope: "
+                    "the slope's law, kappa_n and push against travel, all fitted slopes on one angle); check: only "
+                    "compared with the calibrated model."},
     };
     return keys;
 }

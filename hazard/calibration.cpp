@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "text_file.hpp"
 
@@ -122,9 +123,10 @@ LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, doub
     TrajectoryIntegrator integrator(plane, materials, {f.fluid_density, f.viscosity}, settings);
     // The law's rebound at the CFD's impact, then the flight to the next impact.
     const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
-    const Restitution e = wet_restitution(law, o.normal_restitution, o.tangential_restitution,
-                                          impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel);
-    const Vec2 after = e.tangential * vt * tangent - e.normal * vn * normal;
+    const Restitution e =
+        wet_restitution(law, o.normal_restitution, o.tangential_restitution,
+                        impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel, o.slope_angle);
+    const Vec2 after = (e.tangential * vt + e.push * std::abs(vn)) * tangent - e.normal * vn * normal;
     HazardBlock block;
     block.size = o.size;
     block.density = o.density;
@@ -159,55 +161,104 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
     k.added_mass_coefficient = golden_minimum(misfit, 0.0, 3.0);
     out.early_rms = n ? std::sqrt(misfit(k.added_mass_coefficient) / static_cast<double>(n)) : nan;
 
-    // kappa_n on the beds, then kappa_t on the slopes with it: each the least-squares fit of the relative misfit
-    // (bounce height on the beds, runout on the slopes) over the runs fitted to, within [0.05, 1 / R] (a wet
-    // coefficient above 1 would create energy). Each run's own value (the one that matches it alone, by
-    // bisection) is reported beside, to show how far the runs agree.
-    const auto measure = [&](const BounceObservation& o, bool normal, const WetRebound& law) {
-        const LumpedBounce b = lumped_bounce(o, f, k.drag_coefficient, k.added_mass_coefficient, law);
-        return normal ? b.height : b.runout;
-    };
-    const auto with = [](WetRebound law, bool normal, double kappa) {
-        (normal ? law.kappa_n : law.kappa_t) = kappa;
-        return law;
-    };
     for (const BounceObservation& o : bounces) {
         CalibrationPoint p;
         p.cfd = o;
         p.stokes = impact_stokes_number(o.density, std::abs(o.impact_velocity.y()), o.size, f.viscosity);
-        p.kappa = nan;
+        p.kappa = p.push = nan;
         out.points.push_back(p);
     }
-    for (const bool normal : {true, false}) {
-        std::vector<CalibrationPoint*> used;
-        double limit = 2.0;
-        for (CalibrationPoint& p : out.points) {
-            if (!p.cfd.fitted || p.cfd.on_bed() != normal || (!normal && !std::isfinite(p.cfd.runout))) continue;
-            used.push_back(&p);
-            limit = std::min(limit, 1.0 / (normal ? p.cfd.normal_restitution : p.cfd.tangential_restitution));
-        }
-        if (used.empty()) continue;  // kappa stays 1 (the literature's law)
-        for (CalibrationPoint* p : used) {
-            const double target = normal ? p->cfd.rebound_height : p->cfd.runout;
+    const auto bounce = [&](const BounceObservation& o, const WetRebound& law) {
+        return lumped_bounce(o, f, k.drag_coefficient, k.added_mass_coefficient, law);
+    };
+    // The beds: each run's own kappa_n (its bounce height, by bisection within [0.05, 1 / Rn]: a wet coefficient
+    // above 1 would create energy), then the wake's growth through them (three or more falls of different
+    // lengths) or their least-squares constant.
+    std::vector<CalibrationPoint*> beds;
+    for (CalibrationPoint& p : out.points)
+        if (p.cfd.fitted && p.cfd.on_bed()) beds.push_back(&p);
+    if (!beds.empty()) {
+        const double limit = [&] {
+            double l = 2.0;
+            for (const CalibrationPoint* p : beds) l = std::min(l, 1.0 / p->cfd.normal_restitution);
+            return l;
+        }();
+        for (CalibrationPoint* p : beds) {
+            WetRebound law = k.wet_rebound;  // no wake's growth yet: kappa_n at any travel
             p->kappa = solve_increasing(
-                [&](double kappa) { return measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)); }, target, 0.05,
-                limit);
+                [&](double kappa) {
+                    law.kappa_n = kappa;
+                    return bounce(p->cfd, law).height;
+                },
+                p->cfd.rebound_height, 0.05, limit);
         }
-        if (normal && fit_wake_growth(used, k.wet_rebound)) continue;
-        const double best = golden_minimum(
-            [&](double kappa) {
-                double sum = 0.0;
-                for (const CalibrationPoint* p : used) {
-                    const double target = normal ? p->cfd.rebound_height : p->cfd.runout;
-                    sum += std::pow((measure(p->cfd, normal, with(k.wet_rebound, normal, kappa)) - target) / target, 2);
-                }
-                return sum;
+        if (!fit_wake_growth(beds, k.wet_rebound)) {
+            k.wet_rebound.kappa_n = golden_minimum(
+                [&](double kappa) {
+                    WetRebound law = k.wet_rebound;
+                    law.kappa_n = kappa;
+                    double sum = 0.0;
+                    for (const CalibrationPoint* p : beds)
+                        sum +=
+                            std::pow((bounce(p->cfd, law).height - p->cfd.rebound_height) / p->cfd.rebound_height, 2);
+                    return sum;
+                },
+                0.05, limit);
+        }
+    }
+
+    // The slopes (one angle): each run's own kappa_n and push, the pair that gives its bounce height and its runout
+    // (the runout rises with the push; for each push, kappa_n by bisection for the height), then the table of them
+    // against travel (wet_rebound.hpp). Runs within 0.1 block sizes of travel are averaged.
+    std::vector<CalibrationPoint*> slopes;
+    for (CalibrationPoint& p : out.points)
+        if (p.cfd.fitted && !p.cfd.on_bed() && std::isfinite(p.cfd.runout)) slopes.push_back(&p);
+    for (const CalibrationPoint* p : slopes)
+        if (std::abs(std::abs(p->cfd.slope_angle) - std::abs(slopes.front()->cfd.slope_angle)) > 1e-3)
+            throw std::invalid_argument("the slope runs fitted to (" + slopes.front()->cfd.name + ", " + p->cfd.name +
+                                        ") are on different angles: the law is measured on one; mark the others "
+                                        "`use: check`");
+    for (CalibrationPoint* p : slopes) {
+        const double limit = 1.0 / p->cfd.normal_restitution;
+        WetRebound law;  // this run's (kappa_n, push) at any travel
+        law.beta = k.wet_rebound.beta;
+        law.slope = {std::abs(p->cfd.slope_angle), {p->cfd.travel}, {1.0}, {0.0}};
+        const auto kappa_for = [&](double push) {
+            return solve_increasing(
+                [&](double kappa) {
+                    law.slope.kappa_n = {kappa}, law.slope.push = {push};
+                    return bounce(p->cfd, law).height;
+                },
+                p->cfd.rebound_height, 0.05, limit);
+        };
+        p->push = solve_increasing(
+            [&](double push) {
+                const double kappa = kappa_for(push);
+                law.slope.kappa_n = {kappa}, law.slope.push = {push};
+                return bounce(p->cfd, law).runout;
             },
-            0.05, limit);
-        k.wet_rebound = with(k.wet_rebound, normal, best);
+            p->cfd.runout, -2.0, 2.0);
+        p->kappa = kappa_for(p->push);
+    }
+    if (!slopes.empty()) {
+        std::sort(slopes.begin(), slopes.end(),
+                  [](const CalibrationPoint* a, const CalibrationPoint* b) { return a->cfd.travel < b->cfd.travel; });
+        SlopeRebound& law = k.wet_rebound.slope;
+        law.angle = std::abs(slopes.front()->cfd.slope_angle);
+        std::vector<int> count;
+        for (const CalibrationPoint* p : slopes) {
+            if (law.travel.empty() || p->cfd.travel - law.travel.back() / count.back() > 0.1) {
+                law.travel.push_back(0.0), law.kappa_n.push_back(0.0), law.push.push_back(0.0), count.push_back(0);
+            }
+            law.travel.back() += p->cfd.travel, law.kappa_n.back() += p->kappa, law.push.back() += p->push;
+            ++count.back();
+        }
+        for (std::size_t i = 0; i < count.size(); ++i)
+            law.travel[i] /= count[i], law.kappa_n[i] /= count[i], law.push[i] /= count[i];
     }
     for (CalibrationPoint& p : out.points) {
-        p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel);
+        p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel, p.cfd.slope_angle);
+        p.law_push = k.wet_rebound.push(p.cfd.travel, p.cfd.slope_angle);
         const LumpedBounce b = lumped_bounce(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound);
         p.lumped_height = b.height;
         p.lumped_runout = b.runout;
@@ -219,17 +270,22 @@ namespace {
 
 double percent(double model, double cfd) { return 100.0 * (model - cfd) / cfd; }
 
+std::string kappa_and_push(double kappa, double push) {
+    if (!std::isfinite(kappa)) return "-";
+    return std::isfinite(push) ? printf_text("%.4f, %+.4f", kappa, push) : printf_text("%.4f", kappa);
+}
+
 }  // namespace
 
 std::string calibration_points_csv(const Calibration& c) {
     std::string t =
         "run,use,slope_deg,travel,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa,"
-        "law_kappa\n";
+        "own_push,law_kappa,law_push\n";
     for (const CalibrationPoint& p : c.points)
-        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g\n", p.cfd.name.c_str(),
+        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g\n", p.cfd.name.c_str(),
                          p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.travel,
                          p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
-                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.law_kappa);
+                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push);
     return t;
 }
 
@@ -246,8 +302,16 @@ std::string calibration_markdown(const Calibration& c) {
                    "kappa_n + (kappa_n_start - kappa_n) exp(-travel / wake_length)).\n\n",
                    k.wet_rebound.kappa_n_start, k.wet_rebound.wake_length)
              : std::string(".\n\n");
+    if (const SlopeRebound& s = k.wet_rebound.slope; s.measured()) {
+        t += printf_text("The slope's law (measured at %.3g degrees; wet_rebound.hpp), against travel:",
+                         s.angle * 180.0 / std::numbers::pi);
+        for (std::size_t i = 0; i < s.travel.size(); ++i)
+            t += printf_text("%s %.2f sizes: kappa_n %.4f, push %+.4f", i ? ";" : "", s.travel[i], s.kappa_n[i],
+                             s.push[i]);
+        t += ".\n\n";
+    }
     t += "| run | use | slope | travel (sizes) | impact (along, normal) m/s | St | height CFD | height lumped | diff | "
-         "runout CFD | runout lumped | diff | own kappa | law's kappa_n |\n"
+         "runout CFD | runout lumped | diff | own kappa_n, push | law's kappa_n, push |\n"
          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
         const std::string runout = p.cfd.on_bed()
@@ -255,11 +319,12 @@ std::string calibration_markdown(const Calibration& c) {
                                        : printf_text("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
                                                      percent(p.lumped_runout, p.cfd.runout));
         t += printf_text(
-            "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %.4f |\n",
+            "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %s |\n",
             p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
             p.cfd.travel, p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
             p.lumped_height, percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
-            std::isfinite(p.kappa) ? printf_text("%.4f", p.kappa).c_str() : "-", p.law_kappa);
+            kappa_and_push(p.kappa, p.push).c_str(),
+            kappa_and_push(p.law_kappa, p.cfd.on_bed() ? nan : p.law_push).c_str());
     }
     return t;
 }

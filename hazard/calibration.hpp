@@ -10,7 +10,10 @@
 //        then their least-squares fit, weighted alike). With three or more bed runs after different falls, the
 //        wake's growth too (wet_rebound.hpp): kappa_n(travel) = kappa_n + (kappa_n_start - kappa_n)
 //        exp(-travel / wake_length) through the runs' own values, by least squares;
-//   kappa_t  from bounces on slopes: with that kappa_n, kappa_t makes the runout to the next impact the CFD's.
+//   the slope's law  from bounces on one slope angle (wet_rebound.hpp): each run's own kappa_n and push, the pair
+//        that gives its bounce height and its runout to the next impact, tabulated against travel. kappa_t is not
+//        fitted (1: Rt in water, the study's assumption): the impacts' tangential velocities are too small and too
+//        scattered (0.03-0.6 m/s) to carry what the water does along the slope.
 // Runs marked `check` are not fitted to: the calibrated model's bounce height and runout are compared with
 // theirs (the acceptance: within 15 %).
 //
@@ -52,9 +55,11 @@ struct BlockFluid {
 
 struct CalibrationPoint {
     BounceObservation cfd;
-    double stokes = 0.0;     // of the first impact
-    double kappa = 0.0;      // this run's own fit (kappa_n for beds, kappa_t for slopes; NaN: checks)
-    double law_kappa = 0.0;  // the calibrated law's kappa_n at this run's travel
+    double stokes = 0.0;                              // of the first impact
+    double kappa = 0.0;                               // this run's own kappa_n (NaN: checks)
+    double push = 0.0;                                // a slope run's own push (wet_rebound.hpp; NaN: beds and checks)
+    double law_kappa = 0.0;                           // the calibrated law's kappa_n at this run's travel and angle
+    double law_push = 0.0;                            // and its push
     double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
 };
 

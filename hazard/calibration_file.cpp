@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "case_reader.hpp"
@@ -23,6 +24,28 @@ const std::vector<CaseKey>& calibration_keys() {
         {.path = "model.beta", .type = K::number, .required = true, .min = at_least(0.0)},
         {.path = "model.kappa_n_start", .type = K::number, .min = above(0.0), .max = at_most(2.0)},
         {.path = "model.wake_length", .type = K::number, .default_value = "0.0", .min = at_least(0.0)},
+        {.path = "model.slope", .type = K::section, .meaning = "The slope's law (wet_rebound.hpp), if measured."},
+        {.path = "model.slope.angle",
+         .type = K::number,
+         .required = true,
+         .min = above(0.0),
+         .max = at_most(90.0),
+         .units = "degrees"},
+        {.path = "model.slope.travel",
+         .type = K::number_list,
+         .required = true,
+         .min = at_least(0.0),
+         .units = "block sizes"},
+        {.path = "model.slope.kappa_n",
+         .type = K::number_list,
+         .required = true,
+         .min = above(0.0),
+         .max = at_most(2.0)},
+        {.path = "model.slope.push",
+         .type = K::number_list,
+         .required = true,
+         .min = at_least(-2.0),
+         .max = at_most(2.0)},
         {.path = "block", .type = K::section, .required = true},
         {.path = "block.size", .type = K::number, .required = true, .min = above(0.0), .units = "m"},
         {.path = "block.density", .type = K::number, .required = true, .min = above(0.0), .units = "kg/m^3"},
@@ -56,6 +79,20 @@ CalibrationFile read_calibration_file(const std::filesystem::path& file) {
     c.wet_rebound.wake_length = r.number("model.wake_length");
     c.wet_rebound.kappa_n_start =
         r.present("model.kappa_n_start") ? r.number("model.kappa_n_start") : c.wet_rebound.kappa_n;
+    if (r.present("model.slope")) {
+        SlopeRebound& slope = c.wet_rebound.slope;
+        slope.angle = r.number("model.slope.angle") * std::numbers::pi / 180.0;
+        slope.travel = r.number_list("model.slope.travel");
+        slope.kappa_n = r.number_list("model.slope.kappa_n");
+        slope.push = r.number_list("model.slope.push");
+        if (slope.travel.empty()) r.fail("model.slope.travel", "give at least one travel");
+        for (std::size_t i = 1; i < slope.travel.size(); ++i)
+            if (slope.travel[i] <= slope.travel[i - 1]) r.fail("model.slope.travel", "travels must increase");
+        if (slope.kappa_n.size() != slope.travel.size())
+            r.fail("model.slope.kappa_n", "give one value per travel of model.slope.travel");
+        if (slope.push.size() != slope.travel.size())
+            r.fail("model.slope.push", "give one value per travel of model.slope.travel");
+    }
     c.block_size = r.number("block.size");
     c.block_density = r.number("block.density");
     c.date = r.string("provenance.date");
@@ -82,6 +119,14 @@ void write_calibration_file(const std::filesystem::path& file, const Calibration
     if (c.wet_rebound.wake_length > 0.0) {
         y << YAML::Key << "kappa_n_start" << YAML::Value << c.wet_rebound.kappa_n_start;
         y << YAML::Key << "wake_length" << YAML::Value << c.wet_rebound.wake_length;
+    }
+    if (const SlopeRebound& slope = c.wet_rebound.slope; slope.measured()) {
+        y << YAML::Key << "slope" << YAML::Value << YAML::BeginMap;
+        y << YAML::Key << "angle" << YAML::Value << slope.angle * 180.0 / std::numbers::pi;
+        y << YAML::Key << "travel" << YAML::Value << YAML::Flow << slope.travel;
+        y << YAML::Key << "kappa_n" << YAML::Value << YAML::Flow << slope.kappa_n;
+        y << YAML::Key << "push" << YAML::Value << YAML::Flow << slope.push;
+        y << YAML::EndMap;
     }
     y << YAML::EndMap;
     y << YAML::Key << "block" << YAML::Value << YAML::Flow << YAML::BeginMap;

@@ -2,7 +2,8 @@
 // The wet lumped model's constants for one block, as `chute calibrate` fits them to Chute's CFD runs
 // (calibration.hpp) and a hazard case reads them (`model.calibration`): C_D, C_a and the wet rebound law's
 // kappa_n, kappa_t and beta, with the block they were fitted for and where they came from. YAML:
-//   model: {drag_coefficient: 1.87, added_mass_coefficient: 0.61, kappa_n: 0.78, kappa_t: 0.95, beta: 35}
+//   model: {drag_coefficient: 1.87, added_mass_coefficient: 0.61, kappa_n: 0.78, kappa_t: 0.95, beta: 35,
+//           slope: {angle: 30, travel: [3.1, 4.7], kappa_n: [0.82, 0.81], push: [0.03, -0.30]}}  (optional)
 //   block: {size: 0.3, density: 2500}
 //   provenance: {date: ..., command: ..., runs: ..., grid: ..., points: calibration_points.csv}
 #include <filesystem>

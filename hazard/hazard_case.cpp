@@ -112,7 +112,9 @@ const Schema& schema() {
             {.path = "model.calibration",
              .type = K::string,
              .meaning = "A calibration file written by `chute calibrate` (relative to the case file): its C_D, C_a, "
-                        "kappa_n, kappa_t, beta and the wake's growth are the defaults of the keys below."},
+                        "kappa_n, kappa_t, beta and the wake's growth are the defaults of the keys below, and its "
+                        "slope law is used "
+                        "(`model.slope_law`)."},
             {.path = "model.drag_coefficient",
              .type = K::number,
              .default_value = "2.0",
@@ -157,6 +159,13 @@ const Schema& schema() {
              .min = above(0.0),
              .max = at_most(2.0),
              .meaning = "Wet tangential restitution over the dry one: e_t = Rt kappa_t."},
+            {.path = "model.slope_law",
+             .type = K::boolean,
+             .default_value = "true",
+             .meaning = "Use the calibration's slope law, if it has one: on inclined ground kappa_n and the water's "
+                        "push along the slope (v_t' = Rt kappa_t v_t + push |v_n|) measured by the CFD on one slope "
+                        "angle against travel, interpolated in the angle from the bed's law (hazard/wet_rebound.hpp). "
+                        "false: the bed's law on every slope, no push."},
             {.path = "model.beta",
              .type = K::number,
              .default_value = "35.0",
@@ -305,6 +314,7 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
         model_number(r, "model.kappa_n_start", cal, cal ? cal->wet_rebound.kappa_n_start : 0.0);
     c.settings.wet_rebound.wake_length =
         model_number(r, "model.wake_length", cal, cal ? cal->wet_rebound.wake_length : 0.0);
+    if (cal && r.boolean("model.slope_law")) c.settings.wet_rebound.slope = cal->wet_rebound.slope;
     c.settings.sliding_speed = r.number("model.sliding_speed");
     c.settings.end_time = r.number("model.end_time");
     c.settings.relative_tolerance = r.number("model.relative_tolerance");

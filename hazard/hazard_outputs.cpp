@@ -1,6 +1,7 @@
 #include "hazard_outputs.hpp"
 
 #include <cstdio>
+#include <numbers>
 
 #include "hdf5_file.hpp"
 #include "text_file.hpp"
@@ -39,6 +40,12 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
             ? printf_text(" (%.4g with no wake, over %.3g block sizes)", law.kappa_n_start, law.wake_length).c_str()
             : "",
         law.kappa_t, law.beta, c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
+    if (law.slope.measured())
+        t += printf_text(
+            "  slope law measured at %.3g degrees over travels %.3g-%.3g block sizes: push %+.3g to %+.3g of "
+            "the normal impact speed\n",
+            law.slope.angle * 180.0 / std::numbers::pi, law.slope.travel.front(), law.slope.travel.back(),
+            law.slope.push.front(), law.slope.push.back());
     t += printf_text("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
                      s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
     t += printf_text("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,

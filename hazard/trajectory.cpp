@@ -288,11 +288,15 @@ bool TrajectoryIntegrator::impact(Run& run, const Vec2& x, const Vec2& v) {
         e.wet ? impact_stokes_number(run.block.density, std::abs(vn), run.block.size, water_.viscosity) : infinity;
     // The wake grew over the flight's chord (a flight is nearly straight in water, at about its terminal speed).
     e.travel = (x - run.flight_start).norm() / run.block.size;
+    // The ground's inclination at the impact (roughness included) and which way is down it.
+    const double inclination = std::acos(std::clamp(n.y(), -1.0, 1.0));
+    const Vec2 downslope = n.x() >= 0.0 ? tangent : Vec2(-tangent);
     const Restitution r =
-        e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel) : Restitution{rn, rt};
+        e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel, inclination) : Restitution{rn, rt};
     e.normal_restitution = r.normal;
     e.tangential_restitution = r.tangential;
-    e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent;
+    e.push = r.push * std::abs(vn);
+    e.velocity_after = -r.normal * vn * n + r.tangential * vt * tangent + e.push * downslope;
     run.out.impacts.push_back(e);
     const Vec2 after = e.velocity_after;
     if (after.dot(seg.normal) < settings_.sliding_speed ||

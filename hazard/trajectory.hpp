@@ -68,6 +68,7 @@ struct Impact {
     double stokes = 0.0;  // infinite in air
     double travel = 0.0;  // block sizes from where the flight began (wet_rebound.hpp)
     double normal_restitution = 0.0, tangential_restitution = 0.0;
+    double push = 0.0;  // m/s down the slope: the wake's push on a slope (wet_rebound.hpp)
 };
 
 // The top of a bounce: where the block stops rising from the ground under it.

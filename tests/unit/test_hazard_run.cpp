@@ -5,9 +5,14 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "calibration.hpp"
 #include "case_reader.hpp"
@@ -179,6 +184,25 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
         "block: {size: {value: 0.3}}\nrelease: {x: {value: 1.0}}\n",
         "profile.material", "several materials");
     expect(kGood + "model: {calibration: nothing.yaml}\n", "model.calibration", "not found");
+    // A calibration file's slope law: one value per travel, travels increasing.
+    const auto file = std::filesystem::temp_directory_path() / "chute_bad_slope_calibration.yaml";
+    const std::string head =
+        "model: {drag_coefficient: 1.7, added_mass_coefficient: 1.4, kappa_n: 0.6, kappa_t: 1, beta: 35,\n"
+        "        slope: {angle: 30, ";
+    const std::string tail = "}}\nblock: {size: 0.3, density: 2500}\n";
+    const std::string uses = kGood + "model: {calibration: " + file.string() + "}\n";
+    for (const auto& [slope, key, says] : std::vector<std::tuple<std::string, std::string, std::string>>{
+             {"travel: [3, 5], kappa_n: [0.8, 0.8], push: [0.1]", "model.slope.push", "one value per travel"},
+             {"travel: [3, 5], kappa_n: [0.8], push: [0.1, 0.2]", "model.slope.kappa_n", "one value per travel"},
+             {"travel: [5, 3], kappa_n: [0.8, 0.8], push: [0.1, 0.2]", "model.slope.travel", "increase"},
+             {"travel: [3, 5], kappa_n: [0.8, 0.8], push: [0.1, 3]", "model.slope.push", ""},
+             {"travel: [3], kappa_n: [0.8]", "model.slope.push", "missing"}}) {
+        std::ofstream(file) << head << slope << tail;
+        const std::string e = error_of(uses);
+        EXPECT_NE(e.find(key), std::string::npos) << slope << ": " << e;
+        EXPECT_NE(e.find(says), std::string::npos) << slope << ": " << e;
+    }
+    std::filesystem::remove(file);
 }
 
 }  // namespace
@@ -297,6 +321,126 @@ TEST(HazardCalibration, ImpactTakesTheKappaOfItsTravel) {
     EXPECT_GT(r.impacts[1].normal_restitution, r.impacts[0].normal_restitution);  // a short bounce: less wake
 }
 
+// A slope run made by the model itself (wet_rebound.hpp's slope law `truth`) at 30 degrees.
+BounceObservation slope_bounce(const BlockFluid& fluid, const WetRebound& truth, double degrees, double travel,
+                               Vec2 impact, bool fitted) {
+    BounceObservation o;
+    o.name = "slope_" + std::to_string(static_cast<int>(degrees)) + "_" + std::to_string(travel);
+    o.fitted = fitted;
+    o.slope_angle = degrees * std::numbers::pi / 180.0;
+    o.impact_velocity = impact;
+    o.travel = travel;
+    o.size = 0.3, o.density = 2500.0;
+    const LumpedBounce b = lumped_bounce(o, fluid, 1.8, 0.9, truth);
+    o.rebound_height = b.height, o.runout = b.runout;
+    return o;
+}
+
+// The slope's law (kappa_n and the water's push along the slope against travel, on one angle) is recovered from
+// 30 degree bounces the model made itself, the push both down (+) and up (-) the slope as in Chute's runs; a run
+// between the fitted travels is reproduced; the law is interpolated in the angle from the bed's and held above
+// the measured angle; a calibration file keeps it.
+TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
+    const BlockFluid fluid;
+    const double size = 0.3, density = 2500.0;
+    WetRebound truth;
+    truth.kappa_n = 0.7;
+    truth.slope = {30.0 * std::numbers::pi / 180.0, {3.0, 4.7, 6.0}, {0.82, 0.80, 1.0}, {0.03, -0.3, -0.95}};
+    std::vector<BounceObservation> bounces;
+    for (double speed : {1.5, 2.0}) {
+        BounceObservation o;
+        o.name = "bed";
+        o.impact_velocity = Vec2(0.0, -speed);
+        o.size = size, o.density = density;
+        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
+        bounces.push_back(o);
+    }
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.0, Vec2(0.17, -1.56), true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 4.7, Vec2(0.1, -1.67), true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 6.0, Vec2(0.63, -1.42), true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.9, Vec2(0.03, -1.64), false));  // between: a check
+    bounces.push_back(slope_bounce(fluid, truth, 45.0, 6.9, Vec2(1.47, -0.82), false));  // steeper: held at 30
+    const Calibration c = calibrate(closed_form_fall(fluid, size, density), size, density, bounces, fluid);
+    const SlopeRebound& law = c.constants.wet_rebound.slope;
+    EXPECT_NEAR(law.angle, truth.slope.angle, 1e-12);
+    ASSERT_EQ(law.travel.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(law.travel[i], truth.slope.travel[i], 1e-12);
+        EXPECT_NEAR(law.kappa_n[i], truth.slope.kappa_n[i], 1e-4);
+        EXPECT_NEAR(law.push[i], truth.slope.push[i], 1e-4);
+    }
+    EXPECT_EQ(c.constants.wet_rebound.kappa_t, 1.0);  // not fitted
+    for (const CalibrationPoint& p : c.points) {
+        EXPECT_NEAR(p.law_kappa, truth.normal_kappa(p.cfd.travel, p.cfd.slope_angle), 1e-4) << p.cfd.name;
+        EXPECT_NEAR(p.lumped_height, p.cfd.rebound_height, 1e-3 * p.cfd.rebound_height) << p.cfd.name;
+        if (!p.cfd.on_bed()) {
+            EXPECT_NEAR(p.lumped_runout, p.cfd.runout, 1e-3 * std::abs(p.cfd.runout)) << p.cfd.name;
+        }
+    }
+    // Between the bed and the measured angle, linear in the angle; above it, the measured angle's.
+    const WetRebound& fitted = c.constants.wet_rebound;
+    const double half = 15.0 * std::numbers::pi / 180.0, steep = 60.0 * std::numbers::pi / 180.0;
+    EXPECT_NEAR(fitted.normal_kappa(3.9, half), 0.5 * (fitted.normal_kappa(3.9) + law.kappa_n_at(3.9)), 1e-12);
+    EXPECT_NEAR(fitted.push(3.9, half), 0.5 * law.push_at(3.9), 1e-12);
+    EXPECT_EQ(fitted.push(3.9, steep), law.push_at(3.9));
+    EXPECT_EQ(fitted.push(3.9, 0.0), 0.0);
+    EXPECT_EQ(law.push_at(1.0), law.push.front());  // held beyond the measured travels
+    EXPECT_EQ(law.push_at(9.0), law.push.back());
+    // A calibration file keeps it.
+    const auto file = std::filesystem::temp_directory_path() / "chute_slope_calibration.yaml";
+    write_calibration_file(file, c.constants);
+    const SlopeRebound back = read_calibration_file(file).wet_rebound.slope;
+    EXPECT_NEAR(back.angle, law.angle, 1e-6);
+    ASSERT_EQ(back.push.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(back.push[i], law.push[i], 1e-5);
+    std::filesystem::remove(file);
+    // Slope runs on two angles cannot make one law.
+    bounces.back().fitted = true;
+    try {
+        calibrate(closed_form_fall(fluid, size, density), size, density, bounces, fluid);
+        ADD_FAILURE() << "two slope angles fitted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("different angles"), std::string::npos) << e.what();
+    }
+}
+
+// A block dropped in water onto a 30 degree slope leaves its first impact with the slope law's rebound: the
+// normal part Rn kappa_n^s(travel) exp(-beta/St), the tangential Rt kappa_t v_t plus push |v_n| down the slope,
+// whichever way the slope descends (the mirrored slope gives the mirrored rebound).
+TEST(HazardCalibration, ImpactOnASlopeTakesTheSlopeLaw) {
+    Material ground;
+    ground.normal_restitution = Distribution::fixed(0.8);
+    ground.tangential_restitution = Distribution::fixed(0.8);
+    const std::vector<Material> materials{ground};
+    TrajectorySettings settings;
+    settings.wet_rebound.kappa_n = 0.6;
+    settings.wet_rebound.slope = {30.0 * std::numbers::pi / 180.0, {2.0, 6.0}, {0.9, 1.0}, {-0.2, -0.6}};
+    settings.end_time = 3.0;
+    HazardBlock block;
+    block.size = 0.3, block.density = 2500.0;
+    const double t30 = std::tan(30.0 * std::numbers::pi / 180.0);
+    std::vector<Impact> first;
+    for (const double side : {1.0, -1.0}) {  // descending towards +x, then towards -x
+        const SlopeProfile slope({Vec2(-50.0, side * 50.0 * t30), Vec2(50.0, -side * 50.0 * t30)}, {0}, 100.0);
+        TrajectoryIntegrator integrator(slope, materials, WaterProperties{}, settings);
+        std::mt19937_64 rng(0);
+        const TrajectoryResult r = integrator.run(block, Vec2(0.0, 1.2), Vec2::Zero(), {}, rng);
+        ASSERT_GE(r.impacts.size(), 1u);
+        const Impact& e = r.impacts[0];
+        const Vec2 n(side * 0.5, std::sqrt(3.0) / 2.0), down(side * std::sqrt(3.0) / 2.0, -0.5);
+        const double vn = e.velocity_before.dot(n), vt = e.velocity_before.dot(down);
+        const double kappa = settings.wet_rebound.slope.kappa_n_at(e.travel);
+        EXPECT_NEAR(e.normal_restitution, 0.8 * kappa * std::exp(-35.0 / e.stokes), 1e-12);
+        EXPECT_NEAR(e.push, settings.wet_rebound.slope.push_at(e.travel) * std::abs(vn), 1e-12);
+        EXPECT_LT(e.push, 0.0);  // up the slope
+        EXPECT_NEAR(e.velocity_after.dot(n), -e.normal_restitution * vn, 1e-12);
+        EXPECT_NEAR(e.velocity_after.dot(down), 0.8 * vt + e.push, 1e-12);
+        first.push_back(e);
+    }
+    EXPECT_NEAR(first[1].velocity_after.x(), -first[0].velocity_after.x(), 1e-9);
+    EXPECT_NEAR(first[1].velocity_after.y(), first[0].velocity_after.y(), 1e-9);
+}
+
 // The shipped calibration (data/calibration/study_block.yaml) reads, and a hazard case takes its constants.
 TEST(HazardCalibration, ShippedCalibrationIsUsedByTheExample) {
     const CalibrationFile f =
@@ -306,6 +450,10 @@ TEST(HazardCalibration, ShippedCalibrationIsUsedByTheExample) {
     EXPECT_EQ(c.settings.added_mass_coefficient, f.added_mass_coefficient);
     EXPECT_EQ(c.settings.wet_rebound.kappa_n, f.wet_rebound.kappa_n);
     EXPECT_EQ(f.block_size, 0.3);
+    EXPECT_TRUE(f.wet_rebound.slope.measured());
+    EXPECT_EQ(c.settings.wet_rebound.slope.push, f.wet_rebound.slope.push);  // the slope law is used
+    const HazardCase bed_law = load_hazard_case(kExample / "case.yaml", {"model.slope_law=false"});
+    EXPECT_FALSE(bed_law.settings.wet_rebound.slope.measured());
     const HazardCase own = load_hazard_case(kExample / "case.yaml", {"model.drag_coefficient=2.0"});
     EXPECT_EQ(own.settings.drag_coefficient, 2.0);  // a key given in the case wins over the calibration
 }
