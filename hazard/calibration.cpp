@@ -123,9 +123,9 @@ LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, doub
     TrajectoryIntegrator integrator(plane, materials, {f.fluid_density, f.viscosity}, settings);
     // The law's rebound at the CFD's impact, then the flight to the next impact.
     const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
-    const Restitution e =
-        wet_restitution(law, o.normal_restitution, o.tangential_restitution,
-                        impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel, o.slope_angle);
+    const Restitution e = wet_restitution(law, o.normal_restitution, o.tangential_restitution,
+                                          impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel,
+                                          o.slope_angle, o.impact_angle());
     const Vec2 after = (e.tangential * vt + e.push * std::abs(vn)) * tangent - e.normal * vn * normal;
     HazardBlock block;
     block.size = o.size;
@@ -222,7 +222,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         const double limit = 1.0 / p->cfd.normal_restitution;
         WetRebound law;  // this run's (kappa_n, push) at any travel
         law.beta = k.wet_rebound.beta;
-        law.slope = {std::abs(p->cfd.slope_angle), {p->cfd.travel}, {1.0}, {0.0}};
+        law.slope = {std::abs(p->cfd.slope_angle), {p->cfd.impact_angle()}, {1.0}, {p->cfd.travel}, {0.0}};
         const auto kappa_for = [&](double push) {
             return solve_increasing(
                 [&](double kappa) {
@@ -241,23 +241,29 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         p->kappa = kappa_for(p->push);
     }
     if (!slopes.empty()) {
-        std::sort(slopes.begin(), slopes.end(),
-                  [](const CalibrationPoint* a, const CalibrationPoint* b) { return a->cfd.travel < b->cfd.travel; });
         SlopeRebound& law = k.wet_rebound.slope;
         law.angle = std::abs(slopes.front()->cfd.slope_angle);
-        std::vector<int> count;
-        for (const CalibrationPoint* p : slopes) {
-            if (law.travel.empty() || p->cfd.travel - law.travel.back() / count.back() > 0.1) {
-                law.travel.push_back(0.0), law.kappa_n.push_back(0.0), law.push.push_back(0.0), count.push_back(0);
+        // One table: the runs' own values against `of` (increasing), runs closer than `merge` averaged.
+        const auto tabulate = [&](const std::function<double(const CalibrationPoint*)>& of, double merge,
+                                  double CalibrationPoint::*value, std::vector<double>& x, std::vector<double>& y) {
+            std::vector<const CalibrationPoint*> sorted(slopes.begin(), slopes.end());
+            std::sort(sorted.begin(), sorted.end(),
+                      [&](const CalibrationPoint* a, const CalibrationPoint* b) { return of(a) < of(b); });
+            std::vector<int> count;
+            for (const CalibrationPoint* p : sorted) {
+                if (x.empty() || of(p) - x.back() / count.back() > merge)
+                    x.push_back(0.0), y.push_back(0.0), count.push_back(0);
+                x.back() += of(p), y.back() += p->*value, ++count.back();
             }
-            law.travel.back() += p->cfd.travel, law.kappa_n.back() += p->kappa, law.push.back() += p->push;
-            ++count.back();
-        }
-        for (std::size_t i = 0; i < count.size(); ++i)
-            law.travel[i] /= count[i], law.kappa_n[i] /= count[i], law.push[i] /= count[i];
+            for (std::size_t i = 0; i < count.size(); ++i) x[i] /= count[i], y[i] /= count[i];
+        };
+        tabulate([](const CalibrationPoint* p) { return p->cfd.impact_angle(); }, 0.5 * std::numbers::pi / 180.0,
+                 &CalibrationPoint::kappa, law.impact_angle, law.kappa_n);
+        tabulate([](const CalibrationPoint* p) { return p->cfd.travel; }, 0.1, &CalibrationPoint::push, law.travel,
+                 law.push);
     }
     for (CalibrationPoint& p : out.points) {
-        p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel, p.cfd.slope_angle);
+        p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel, p.cfd.slope_angle, p.cfd.impact_angle());
         p.law_push = k.wet_rebound.push(p.cfd.travel, p.cfd.slope_angle);
         const LumpedBounce b = lumped_bounce(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound);
         p.lumped_height = b.height;
@@ -268,7 +274,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
 
 namespace {
 
-double percent(double model, double cfd) { return 100.0 * (model - cfd) / cfd; }
+double percent(double model, double cfd) { return 100.0 * (model - cfd) / std::abs(cfd); }
 
 std::string kappa_and_push(double kappa, double push) {
     if (!std::isfinite(kappa)) return "-";
@@ -303,21 +309,26 @@ std::string calibration_markdown(const Calibration& c) {
                    k.wet_rebound.kappa_n_start, k.wet_rebound.wake_length)
              : std::string(".\n\n");
     if (const SlopeRebound& s = k.wet_rebound.slope; s.measured()) {
-        t += printf_text("The slope's law (measured at %.3g degrees; wet_rebound.hpp), against travel:",
-                         s.angle * 180.0 / std::numbers::pi);
+        t += printf_text(
+            "The slope's law (measured at %.3g degrees; wet_rebound.hpp): kappa_n against the impact's angle "
+            "from the normal:",
+            s.angle * 180.0 / std::numbers::pi);
+        for (std::size_t i = 0; i < s.impact_angle.size(); ++i)
+            t += printf_text("%s %.1f deg %.4f", i ? ";" : "", s.impact_angle[i] * 180.0 / std::numbers::pi,
+                             s.kappa_n[i]);
+        t += "; the push against travel:";
         for (std::size_t i = 0; i < s.travel.size(); ++i)
-            t += printf_text("%s %.2f sizes: kappa_n %.4f, push %+.4f", i ? ";" : "", s.travel[i], s.kappa_n[i],
-                             s.push[i]);
+            t += printf_text("%s %.2f sizes %+.4f", i ? ";" : "", s.travel[i], s.push[i]);
         t += ".\n\n";
     }
     t += "| run | use | slope | travel (sizes) | impact (along, normal) m/s | St | height CFD | height lumped | diff | "
          "runout CFD | runout lumped | diff | own kappa_n, push | law's kappa_n, push |\n"
          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
-        const std::string runout = p.cfd.on_bed()
-                                       ? "- | - | -"
-                                       : printf_text("%.3f m | %.3f m | %+.1f %%", p.cfd.runout, p.lumped_runout,
-                                                     percent(p.lumped_runout, p.cfd.runout));
+        const std::string runout =
+            p.cfd.on_bed() ? "- | - | -"
+                           : printf_text("%.3f m | %.3f m | %+.1f %% (%+.3f m)", p.cfd.runout, p.lumped_runout,
+                                         percent(p.lumped_runout, p.cfd.runout), p.lumped_runout - p.cfd.runout);
         t += printf_text(
             "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %s |\n",
             p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 #include "case_reader.hpp"
 #include "hdf5_file.hpp"
@@ -29,6 +31,12 @@ const std::vector<CaseKey>& calibration_keys() {
          .type = K::number,
          .required = true,
          .min = above(0.0),
+         .max = at_most(90.0),
+         .units = "degrees"},
+        {.path = "model.slope.impact_angle",
+         .type = K::number_list,
+         .required = true,
+         .min = at_least(0.0),
          .max = at_most(90.0),
          .units = "degrees"},
         {.path = "model.slope.travel",
@@ -82,16 +90,20 @@ CalibrationFile read_calibration_file(const std::filesystem::path& file) {
     if (r.present("model.slope")) {
         SlopeRebound& slope = c.wet_rebound.slope;
         slope.angle = r.number("model.slope.angle") * std::numbers::pi / 180.0;
-        slope.travel = r.number_list("model.slope.travel");
+        for (const double degrees : r.number_list("model.slope.impact_angle"))
+            slope.impact_angle.push_back(degrees * std::numbers::pi / 180.0);
         slope.kappa_n = r.number_list("model.slope.kappa_n");
+        slope.travel = r.number_list("model.slope.travel");
         slope.push = r.number_list("model.slope.push");
-        if (slope.travel.empty()) r.fail("model.slope.travel", "give at least one travel");
-        for (std::size_t i = 1; i < slope.travel.size(); ++i)
-            if (slope.travel[i] <= slope.travel[i - 1]) r.fail("model.slope.travel", "travels must increase");
-        if (slope.kappa_n.size() != slope.travel.size())
-            r.fail("model.slope.kappa_n", "give one value per travel of model.slope.travel");
-        if (slope.push.size() != slope.travel.size())
-            r.fail("model.slope.push", "give one value per travel of model.slope.travel");
+        // Two tables: kappa_n against the impact angle, the push against travel.
+        for (const auto& [x_key, x, y_key, y] :
+             {std::tuple{"model.slope.impact_angle", &slope.impact_angle, "model.slope.kappa_n", &slope.kappa_n},
+              std::tuple{"model.slope.travel", &slope.travel, "model.slope.push", &slope.push}}) {
+            if (x->empty()) r.fail(x_key, "give at least one value");
+            for (std::size_t i = 1; i < x->size(); ++i)
+                if ((*x)[i] <= (*x)[i - 1]) r.fail(x_key, "the values must increase");
+            if (y->size() != x->size()) r.fail(y_key, std::string("give one value per entry of ") + x_key);
+        }
     }
     c.block_size = r.number("block.size");
     c.block_density = r.number("block.density");
@@ -123,8 +135,11 @@ void write_calibration_file(const std::filesystem::path& file, const Calibration
     if (const SlopeRebound& slope = c.wet_rebound.slope; slope.measured()) {
         y << YAML::Key << "slope" << YAML::Value << YAML::BeginMap;
         y << YAML::Key << "angle" << YAML::Value << slope.angle * 180.0 / std::numbers::pi;
-        y << YAML::Key << "travel" << YAML::Value << YAML::Flow << slope.travel;
+        std::vector<double> degrees;
+        for (const double a : slope.impact_angle) degrees.push_back(a * 180.0 / std::numbers::pi);
+        y << YAML::Key << "impact_angle" << YAML::Value << YAML::Flow << degrees;
         y << YAML::Key << "kappa_n" << YAML::Value << YAML::Flow << slope.kappa_n;
+        y << YAML::Key << "travel" << YAML::Value << YAML::Flow << slope.travel;
         y << YAML::Key << "push" << YAML::Value << YAML::Flow << slope.push;
         y << YAML::EndMap;
     }

@@ -3,7 +3,8 @@
 // (calibration.hpp) and a hazard case reads them (`model.calibration`): C_D, C_a and the wet rebound law's
 // kappa_n, kappa_t and beta, with the block they were fitted for and where they came from. YAML:
 //   model: {drag_coefficient: 1.87, added_mass_coefficient: 0.61, kappa_n: 0.78, kappa_t: 0.95, beta: 35,
-//           slope: {angle: 30, travel: [3.1, 4.7], kappa_n: [0.82, 0.81], push: [0.03, -0.30]}}  (optional)
+//           slope: {angle: 30, impact_angle: [3, 24], kappa_n: [0.82, 1.03],      (optional; degrees)
+//                   travel: [3.1, 6.0], push: [0.03, -0.96]}}
 //   block: {size: 0.3, density: 2500}
 //   provenance: {date: ..., command: ..., runs: ..., grid: ..., points: calibration_points.csv}
 #include <filesystem>

@@ -1,5 +1,6 @@
 #include "hazard_outputs.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <numbers>
 
@@ -40,12 +41,17 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
             ? printf_text(" (%.4g with no wake, over %.3g block sizes)", law.kappa_n_start, law.wake_length).c_str()
             : "",
         law.kappa_t, law.beta, c.calibration.empty() ? "" : (" (" + c.calibration + ")").c_str());
-    if (law.slope.measured())
+    if (const SlopeRebound& slope = law.slope; slope.measured()) {
+        const auto [kappa_low, kappa_high] = std::minmax_element(slope.kappa_n.begin(), slope.kappa_n.end());
+        const auto [push_low, push_high] = std::minmax_element(slope.push.begin(), slope.push.end());
         t += printf_text(
-            "  slope law measured at %.3g degrees over travels %.3g-%.3g block sizes: push %+.3g to %+.3g of "
-            "the normal impact speed\n",
-            law.slope.angle * 180.0 / std::numbers::pi, law.slope.travel.front(), law.slope.travel.back(),
-            law.slope.push.front(), law.slope.push.back());
+            "  slope law measured at %.3g degrees: kappa_n %.3g to %.3g over impact angles %.3g-%.3g degrees, push "
+            "%+.3g "
+            "to %+.3g of the normal impact speed over travels %.3g-%.3g block sizes\n",
+            slope.angle * 180.0 / std::numbers::pi, *kappa_low, *kappa_high,
+            slope.impact_angle.front() * 180.0 / std::numbers::pi, slope.impact_angle.back() * 180.0 / std::numbers::pi,
+            *push_low, *push_high, slope.travel.front(), slope.travel.back());
+    }
     t += printf_text("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
                      s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
     t += printf_text("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,

@@ -22,7 +22,7 @@ double impact_stokes_number(double block_density, double normal_speed, double si
     return block_density * normal_speed * size / (9.0 * viscosity);
 }
 
-double SlopeRebound::kappa_n_at(double at) const { return table_at(travel, kappa_n, at); }
+double SlopeRebound::kappa_n_at(double at) const { return table_at(impact_angle, kappa_n, at); }
 double SlopeRebound::push_at(double at) const { return table_at(travel, push, at); }
 
 double WetRebound::normal_kappa(double travel) const {
@@ -30,10 +30,10 @@ double WetRebound::normal_kappa(double travel) const {
     return kappa_n + (kappa_n_start - kappa_n) * std::exp(-travel / wake_length);
 }
 
-double WetRebound::normal_kappa(double travel, double slope_angle) const {
+double WetRebound::normal_kappa(double travel, double slope_angle, double impact_angle) const {
     if (!slope.measured()) return normal_kappa(travel);
     const double w = std::clamp(std::abs(slope_angle) / slope.angle, 0.0, 1.0);
-    return (1.0 - w) * normal_kappa(travel) + w * slope.kappa_n_at(travel);
+    return (1.0 - w) * normal_kappa(travel) + w * slope.kappa_n_at(impact_angle);
 }
 
 double WetRebound::push(double travel, double slope_angle) const {
@@ -42,8 +42,8 @@ double WetRebound::push(double travel, double slope_angle) const {
 }
 
 Restitution wet_restitution(const WetRebound& law, double rn, double rt, double stokes, double travel,
-                            double slope_angle) {
-    return {rn * law.normal_kappa(travel, slope_angle) * std::exp(-law.beta / stokes), rt * law.kappa_t,
+                            double slope_angle, double impact_angle) {
+    return {rn * law.normal_kappa(travel, slope_angle, impact_angle) * std::exp(-law.beta / stokes), rt * law.kappa_t,
             law.push(travel, slope_angle)};
 }
 

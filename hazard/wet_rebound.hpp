@@ -24,28 +24,31 @@
 //
 // (kappa_n the developed wake's value); L = 0 keeps kappa_n whatever the travel.
 //
-// On a slope the wake does not only brake the rebound: it pushes the block along the slope. Chute's 30 degree
-// runs show the push turning up the slope as the fall lengthens (the vortex shed on the upslope side comes down
-// over the block after the impact; docs/validation.md, "Hazard analysis"), which no restitution of the incoming
-// tangential velocity can carry (the impacts come in with 0.03-0.6 m/s along the slope and leave with up to
-// -0.9 m/s). The slope's law, measured on one slope angle at several falls, gives the rebound
+// On a slope the water does more. Chute's 30 degree runs (docs/validation.md, "Hazard analysis") show two things a
+// bed does not: the rebound's normal part grows with the impact's obliquity (kappa_n 0.81 for an impact along the
+// normal, 1.0 at 24 degrees from it, 1.25 and more at 49: the flow the block drives along the bed under it lifts
+// it), and the wake pushes the block along the slope, up it the longer the fall (the vortex shed on the upslope
+// side comes down over the block after the impact), which no restitution of the incoming tangential velocity can
+// carry (the impacts come in with 0.03-1 m/s along the slope). The slope's law, measured on one slope angle at
+// several falls, gives the rebound
 //
-//   v_n' = -Rn kappa_n^s(travel) exp(-beta / St) v_n,   v_t' = Rt kappa_t v_t + push^s(travel) |v_n|
+//   v_n' = -Rn kappa_n^s(impact angle) exp(-beta / St) v_n,   v_t' = Rt kappa_t v_t + push^s(travel) |v_n|
 //
-// (t down the slope; push^s < 0 turns the block up it). kappa_n^s and push^s are the CFD runs' own values at
-// their travels, interpolated linearly and held beyond the first and last (no form is known for the push; the
-// runs grow it faster than linearly up to 6 block sizes). Between the bed (angle 0: the law above, no push) and
-// the measured angle both are interpolated linearly in the angle; steeper slopes take the measured angle's values
-// (the 45 degree check shows what that misses).
+// (t down the slope; push^s < 0 turns the block up it; the impact angle is atan(|v_t| / |v_n|)). kappa_n^s and
+// push^s are the CFD runs' own values, interpolated linearly and held beyond the first and last (no form is known
+// for either). Between the bed (angle 0: the law above, no push) and the measured slope angle both are
+// interpolated linearly in the ground's angle; steeper ground takes the measured angle's values (the 45 degree
+// check shows what that misses).
 #include <vector>
 
 namespace chute {
 
 struct SlopeRebound {
     double angle = 0.0;  // rad, from the horizontal; 0: no slope measured (the bed's law everywhere)
-    std::vector<double> travel, kappa_n, push;  // at increasing travels (block sizes)
-    bool measured() const { return angle > 0.0 && !travel.empty(); }
-    double kappa_n_at(double travel) const;
+    std::vector<double> impact_angle, kappa_n;  // kappa_n^s at increasing impact angles (rad, from the normal)
+    std::vector<double> travel, push;           // push^s at increasing travels (block sizes)
+    bool measured() const { return angle > 0.0 && !impact_angle.empty() && !travel.empty(); }
+    double kappa_n_at(double impact_angle) const;
     double push_at(double travel) const;
 };
 
@@ -55,8 +58,9 @@ struct WetRebound {
     double kappa_n_start = 1.0, wake_length = 0.0;  // block sizes; 0: no history
     SlopeRebound slope;
     double normal_kappa(double travel) const;  // on the bed; travel in block sizes
-    // On ground inclined by `slope_angle` (rad): the bed's law and the slope's, interpolated in the angle.
-    double normal_kappa(double travel, double slope_angle) const;
+    // On ground inclined by `slope_angle` (rad), an impact `impact_angle` (rad) from its normal: the bed's law and
+    // the slope's, interpolated in the ground's angle.
+    double normal_kappa(double travel, double slope_angle, double impact_angle) const;
     double push(double travel, double slope_angle) const;  // down the slope, over the normal impact speed
 };
 
@@ -67,8 +71,9 @@ struct Restitution {
     double normal, tangential;
     double push = 0.0;  // the water's push down the slope, over the normal impact speed
 };
-// `slope_angle`: the ground's inclination at the impact (rad, 0 for a horizontal bed).
+// `slope_angle`: the ground's inclination at the impact (rad, 0 for a horizontal bed); `impact_angle`: the incoming
+// velocity's angle from the ground's normal (rad).
 Restitution wet_restitution(const WetRebound& law, double rn, double rt, double stokes, double travel,
-                            double slope_angle = 0.0);
+                            double slope_angle = 0.0, double impact_angle = 0.0);
 
 }  // namespace chute

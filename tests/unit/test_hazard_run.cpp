@@ -192,11 +192,16 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
     const std::string tail = "}}\nblock: {size: 0.3, density: 2500}\n";
     const std::string uses = kGood + "model: {calibration: " + file.string() + "}\n";
     for (const auto& [slope, key, says] : std::vector<std::tuple<std::string, std::string, std::string>>{
-             {"travel: [3, 5], kappa_n: [0.8, 0.8], push: [0.1]", "model.slope.push", "one value per travel"},
-             {"travel: [3, 5], kappa_n: [0.8], push: [0.1, 0.2]", "model.slope.kappa_n", "one value per travel"},
-             {"travel: [5, 3], kappa_n: [0.8, 0.8], push: [0.1, 0.2]", "model.slope.travel", "increase"},
-             {"travel: [3, 5], kappa_n: [0.8, 0.8], push: [0.1, 3]", "model.slope.push", ""},
-             {"travel: [3], kappa_n: [0.8]", "model.slope.push", "missing"}}) {
+             {"impact_angle: [3, 20], kappa_n: [0.8, 0.9], travel: [3, 5], push: [0.1]", "model.slope.push",
+              "one value per entry of model.slope.travel"},
+             {"impact_angle: [3, 20], kappa_n: [0.8], travel: [3, 5], push: [0.1, 0.2]", "model.slope.kappa_n",
+              "one value per entry of model.slope.impact_angle"},
+             {"impact_angle: [3, 20], kappa_n: [0.8, 0.9], travel: [5, 3], push: [0.1, 0.2]", "model.slope.travel",
+              "increase"},
+             {"impact_angle: [20, 3], kappa_n: [0.8, 0.9], travel: [3, 5], push: [0.1, 0.2]",
+              "model.slope.impact_angle", "increase"},
+             {"impact_angle: [3, 20], kappa_n: [0.8, 0.9], travel: [3, 5], push: [0.1, 3]", "model.slope.push", ""},
+             {"impact_angle: [3], kappa_n: [0.8], travel: [3]", "model.slope.push", "missing"}}) {
         std::ofstream(file) << head << slope << tail;
         const std::string e = error_of(uses);
         EXPECT_NE(e.find(key), std::string::npos) << slope << ": " << e;
@@ -336,16 +341,23 @@ BounceObservation slope_bounce(const BlockFluid& fluid, const WetRebound& truth,
     return o;
 }
 
-// The slope's law (kappa_n and the water's push along the slope against travel, on one angle) is recovered from
-// 30 degree bounces the model made itself, the push both down (+) and up (-) the slope as in Chute's runs; a run
-// between the fitted travels is reproduced; the law is interpolated in the angle from the bed's and held above
-// the measured angle; a calibration file keeps it.
+// The slope's law (kappa_n against the impact's angle from the normal, the water's push along the slope against
+// travel, on one slope angle) is recovered from 30 degree bounces the model made itself, the push both down (+) and
+// up (-) the slope as in Chute's runs; a run between the fitted ones is reproduced; the law is interpolated in the
+// angle from the bed's and held above the measured angle; a calibration file keeps it.
 TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
     const BlockFluid fluid;
     const double size = 0.3, density = 2500.0;
     WetRebound truth;
     truth.kappa_n = 0.7;
-    truth.slope = {30.0 * std::numbers::pi / 180.0, {3.0, 4.7, 6.0}, {0.82, 0.80, 1.0}, {0.03, -0.3, -0.95}};
+    // The fitted runs' impacts, 3, 12 and 24 degrees from the normal, after 3, 4.7 and 6 block sizes.
+    const std::vector<Vec2> impacts{Vec2(0.09, -1.65), Vec2(0.35, -1.6), Vec2(0.63, -1.42)};
+    const auto obliquity = [](Vec2 v) { return std::atan2(std::abs(v.x()), std::abs(v.y())); };
+    truth.slope = {30.0 * std::numbers::pi / 180.0,
+                   {obliquity(impacts[0]), obliquity(impacts[1]), obliquity(impacts[2])},
+                   {0.82, 0.90, 1.03},
+                   {3.0, 4.7, 6.0},
+                   {0.03, -0.3, -0.95}};
     std::vector<BounceObservation> bounces;
     for (double speed : {1.5, 2.0}) {
         BounceObservation o;
@@ -355,23 +367,26 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
         o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
         bounces.push_back(o);
     }
-    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.0, Vec2(0.17, -1.56), true));
-    bounces.push_back(slope_bounce(fluid, truth, 30.0, 4.7, Vec2(0.1, -1.67), true));
-    bounces.push_back(slope_bounce(fluid, truth, 30.0, 6.0, Vec2(0.63, -1.42), true));
-    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.9, Vec2(0.03, -1.64), false));  // between: a check
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.0, impacts[0], true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 4.7, impacts[1], true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 6.0, impacts[2], true));
+    bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.9, Vec2(0.2, -1.64), false));   // between: a check
     bounces.push_back(slope_bounce(fluid, truth, 45.0, 6.9, Vec2(1.47, -0.82), false));  // steeper: held at 30
     const Calibration c = calibrate(closed_form_fall(fluid, size, density), size, density, bounces, fluid);
     const SlopeRebound& law = c.constants.wet_rebound.slope;
     EXPECT_NEAR(law.angle, truth.slope.angle, 1e-12);
     ASSERT_EQ(law.travel.size(), 3u);
+    ASSERT_EQ(law.impact_angle.size(), 3u);
     for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(law.impact_angle[i], truth.slope.impact_angle[i], 1e-12);
         EXPECT_NEAR(law.travel[i], truth.slope.travel[i], 1e-12);
         EXPECT_NEAR(law.kappa_n[i], truth.slope.kappa_n[i], 1e-4);
         EXPECT_NEAR(law.push[i], truth.slope.push[i], 1e-4);
     }
     EXPECT_EQ(c.constants.wet_rebound.kappa_t, 1.0);  // not fitted
     for (const CalibrationPoint& p : c.points) {
-        EXPECT_NEAR(p.law_kappa, truth.normal_kappa(p.cfd.travel, p.cfd.slope_angle), 1e-4) << p.cfd.name;
+        EXPECT_NEAR(p.law_kappa, truth.normal_kappa(p.cfd.travel, p.cfd.slope_angle, p.cfd.impact_angle()), 1e-4)
+            << p.cfd.name;
         EXPECT_NEAR(p.lumped_height, p.cfd.rebound_height, 1e-3 * p.cfd.rebound_height) << p.cfd.name;
         if (!p.cfd.on_bed()) {
             EXPECT_NEAR(p.lumped_runout, p.cfd.runout, 1e-3 * std::abs(p.cfd.runout)) << p.cfd.name;
@@ -380,7 +395,9 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
     // Between the bed and the measured angle, linear in the angle; above it, the measured angle's.
     const WetRebound& fitted = c.constants.wet_rebound;
     const double half = 15.0 * std::numbers::pi / 180.0, steep = 60.0 * std::numbers::pi / 180.0;
-    EXPECT_NEAR(fitted.normal_kappa(3.9, half), 0.5 * (fitted.normal_kappa(3.9) + law.kappa_n_at(3.9)), 1e-12);
+    EXPECT_NEAR(fitted.normal_kappa(3.9, half, 0.1), 0.5 * (fitted.normal_kappa(3.9) + law.kappa_n_at(0.1)), 1e-12);
+    EXPECT_EQ(fitted.normal_kappa(3.9, steep, 0.1), law.kappa_n_at(0.1));
+    EXPECT_EQ(law.kappa_n_at(1.2), law.kappa_n.back());  // held beyond the measured impact angles
     EXPECT_NEAR(fitted.push(3.9, half), 0.5 * law.push_at(3.9), 1e-12);
     EXPECT_EQ(fitted.push(3.9, steep), law.push_at(3.9));
     EXPECT_EQ(fitted.push(3.9, 0.0), 0.0);
@@ -392,7 +409,12 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
     const SlopeRebound back = read_calibration_file(file).wet_rebound.slope;
     EXPECT_NEAR(back.angle, law.angle, 1e-6);
     ASSERT_EQ(back.push.size(), 3u);
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(back.push[i], law.push[i], 1e-5);
+    ASSERT_EQ(back.kappa_n.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(back.push[i], law.push[i], 1e-5);
+        EXPECT_NEAR(back.kappa_n[i], law.kappa_n[i], 1e-5);
+        EXPECT_NEAR(back.impact_angle[i], law.impact_angle[i], 1e-6);
+    }
     std::filesystem::remove(file);
     // Slope runs on two angles cannot make one law.
     bounces.back().fitted = true;
@@ -405,7 +427,7 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
 }
 
 // A block dropped in water onto a 30 degree slope leaves its first impact with the slope law's rebound: the
-// normal part Rn kappa_n^s(travel) exp(-beta/St), the tangential Rt kappa_t v_t plus push |v_n| down the slope,
+// normal part Rn kappa_n^s(impact angle) exp(-beta/St), the tangential Rt kappa_t v_t plus push |v_n| down the slope,
 // whichever way the slope descends (the mirrored slope gives the mirrored rebound).
 TEST(HazardCalibration, ImpactOnASlopeTakesTheSlopeLaw) {
     Material ground;
@@ -414,7 +436,7 @@ TEST(HazardCalibration, ImpactOnASlopeTakesTheSlopeLaw) {
     const std::vector<Material> materials{ground};
     TrajectorySettings settings;
     settings.wet_rebound.kappa_n = 0.6;
-    settings.wet_rebound.slope = {30.0 * std::numbers::pi / 180.0, {2.0, 6.0}, {0.9, 1.0}, {-0.2, -0.6}};
+    settings.wet_rebound.slope = {30.0 * std::numbers::pi / 180.0, {0.0, 0.6}, {0.9, 1.1}, {2.0, 6.0}, {-0.2, -0.6}};
     settings.end_time = 3.0;
     HazardBlock block;
     block.size = 0.3, block.density = 2500.0;
@@ -429,7 +451,8 @@ TEST(HazardCalibration, ImpactOnASlopeTakesTheSlopeLaw) {
         const Impact& e = r.impacts[0];
         const Vec2 n(side * 0.5, std::sqrt(3.0) / 2.0), down(side * std::sqrt(3.0) / 2.0, -0.5);
         const double vn = e.velocity_before.dot(n), vt = e.velocity_before.dot(down);
-        const double kappa = settings.wet_rebound.slope.kappa_n_at(e.travel);
+        const double kappa = settings.wet_rebound.slope.kappa_n_at(std::atan2(std::abs(vt), std::abs(vn)));
+        EXPECT_GT(kappa, 0.9);  // an oblique impact: kappa_n from the angle's table
         EXPECT_NEAR(e.normal_restitution, 0.8 * kappa * std::exp(-35.0 / e.stokes), 1e-12);
         EXPECT_NEAR(e.push, settings.wet_rebound.slope.push_at(e.travel) * std::abs(vn), 1e-12);
         EXPECT_LT(e.push, 0.0);  // up the slope
