@@ -98,6 +98,31 @@ bool fit_wake_growth(const std::vector<CalibrationPoint*>& beds, WetRebound& law
     return true;
 }
 
+// The slope's law through runs on one angle: their own kappa_n against the impact angle, their own push against
+// travel (each table increasing, runs closer than `merge` averaged).
+SlopeRebound slope_law_of(const std::vector<const CalibrationPoint*>& runs) {
+    SlopeRebound law;
+    law.angle = std::abs(runs.front()->cfd.slope_angle);
+    const auto tabulate = [&](const std::function<double(const CalibrationPoint*)>& of, double merge,
+                              double CalibrationPoint::*value, std::vector<double>& x, std::vector<double>& y) {
+        std::vector<const CalibrationPoint*> sorted = runs;
+        std::sort(sorted.begin(), sorted.end(),
+                  [&](const CalibrationPoint* a, const CalibrationPoint* b) { return of(a) < of(b); });
+        std::vector<int> count;
+        for (const CalibrationPoint* p : sorted) {
+            if (x.empty() || of(p) - x.back() / count.back() > merge)
+                x.push_back(0.0), y.push_back(0.0), count.push_back(0);
+            x.back() += of(p), y.back() += p->*value, ++count.back();
+        }
+        for (std::size_t i = 0; i < count.size(); ++i) x[i] /= count[i], y[i] /= count[i];
+    };
+    tabulate([](const CalibrationPoint* p) { return p->cfd.impact_angle(); }, 0.5 * std::numbers::pi / 180.0,
+             &CalibrationPoint::kappa, law.impact_angle, law.kappa_n);
+    tabulate([](const CalibrationPoint* p) { return p->cfd.travel; }, 0.1, &CalibrationPoint::push, law.travel,
+             law.push);
+    return law;
+}
+
 }  // namespace
 
 double drag_coefficient_from_terminal_speed(double terminal_speed, double size, double density, const BlockFluid& f) {
@@ -241,26 +266,18 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         p->kappa = kappa_for(p->push);
     }
     if (!slopes.empty()) {
-        SlopeRebound& law = k.wet_rebound.slope;
-        law.angle = std::abs(slopes.front()->cfd.slope_angle);
-        // One table: the runs' own values against `of` (increasing), runs closer than `merge` averaged.
-        const auto tabulate = [&](const std::function<double(const CalibrationPoint*)>& of, double merge,
-                                  double CalibrationPoint::*value, std::vector<double>& x, std::vector<double>& y) {
-            std::vector<const CalibrationPoint*> sorted(slopes.begin(), slopes.end());
-            std::sort(sorted.begin(), sorted.end(),
-                      [&](const CalibrationPoint* a, const CalibrationPoint* b) { return of(a) < of(b); });
-            std::vector<int> count;
-            for (const CalibrationPoint* p : sorted) {
-                if (x.empty() || of(p) - x.back() / count.back() > merge)
-                    x.push_back(0.0), y.push_back(0.0), count.push_back(0);
-                x.back() += of(p), y.back() += p->*value, ++count.back();
-            }
-            for (std::size_t i = 0; i < count.size(); ++i) x[i] /= count[i], y[i] /= count[i];
-        };
-        tabulate([](const CalibrationPoint* p) { return p->cfd.impact_angle(); }, 0.5 * std::numbers::pi / 180.0,
-                 &CalibrationPoint::kappa, law.impact_angle, law.kappa_n);
-        tabulate([](const CalibrationPoint* p) { return p->cfd.travel; }, 0.1, &CalibrationPoint::push, law.travel,
-                 law.push);
+        k.wet_rebound.slope = slope_law_of({slopes.begin(), slopes.end()});
+        // Each run left out in turn: how well the law fitted to the others predicts it (a cross-validation).
+        for (CalibrationPoint* left : slopes) {
+            std::vector<const CalibrationPoint*> others;
+            for (const CalibrationPoint* p : slopes)
+                if (p != left) others.push_back(p);
+            if (others.empty()) continue;
+            WetRebound law = k.wet_rebound;
+            law.slope = slope_law_of(others);
+            const LumpedBounce b = bounce(left->cfd, law);
+            left->left_out_height = b.height, left->left_out_runout = b.runout;
+        }
     }
     for (CalibrationPoint& p : out.points) {
         p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel, p.cfd.slope_angle, p.cfd.impact_angle());
@@ -286,12 +303,14 @@ std::string kappa_and_push(double kappa, double push) {
 std::string calibration_points_csv(const Calibration& c) {
     std::string t =
         "run,use,slope_deg,travel,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa,"
-        "own_push,law_kappa,law_push\n";
+        "own_push,law_kappa,law_push,left_out_height,left_out_runout\n";
     for (const CalibrationPoint& p : c.points)
-        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g\n", p.cfd.name.c_str(),
-                         p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.travel,
-                         p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
-                         p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push);
+        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%.9g\n",
+                         p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
+                         p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.travel, p.cfd.impact_velocity.x(),
+                         p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height, p.lumped_height, p.cfd.runout,
+                         p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push, p.left_out_height,
+                         p.left_out_runout);
     return t;
 }
 
@@ -322,21 +341,27 @@ std::string calibration_markdown(const Calibration& c) {
         t += ".\n\n";
     }
     t += "| run | use | slope | travel (sizes) | impact (along, normal) m/s | St | height CFD | height lumped | diff | "
-         "runout CFD | runout lumped | diff | own kappa_n, push | law's kappa_n, push |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "runout CFD | runout lumped | diff | own kappa_n, push | law's kappa_n, push | left out: height, runout |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CalibrationPoint& p : c.points) {
         const std::string runout =
             p.cfd.on_bed() ? "- | - | -"
                            : printf_text("%.3f m | %.3f m | %+.1f %% (%+.3f m)", p.cfd.runout, p.lumped_runout,
                                          percent(p.lumped_runout, p.cfd.runout), p.lumped_runout - p.cfd.runout);
         t += printf_text(
-            "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %s |\n",
+            "| %s | %s | %.0f deg | %.2f | (%.3f, %.3f) | %.3g | %.4f m | %.4f m | %+.1f %% | %s | %s | %s | %s |\n",
             p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
             p.cfd.travel, p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
             p.lumped_height, percent(p.lumped_height, p.cfd.rebound_height), runout.c_str(),
             kappa_and_push(p.kappa, p.push).c_str(),
-            kappa_and_push(p.law_kappa, p.cfd.on_bed() ? nan : p.law_push).c_str());
+            kappa_and_push(p.law_kappa, p.cfd.on_bed() ? nan : p.law_push).c_str(),
+            std::isfinite(p.left_out_height)
+                ? printf_text("%+.1f %%, %+.1f %% (%+.3f m)", percent(p.left_out_height, p.cfd.rebound_height),
+                              percent(p.left_out_runout, p.cfd.runout), p.left_out_runout - p.cfd.runout)
+                      .c_str()
+                : "-");
     }
+    t += "\n(left out: a fitted slope run predicted by the slope's law fitted to the other slope runs.)\n";
     return t;
 }
 

@@ -22,6 +22,7 @@
 // (the physics of a slope), impacts at the contact distance; the lumped block meets a plane along the same
 // gravity at the same velocity, so both measure height and runout from their impact point.
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,9 @@ struct CalibrationPoint {
     double law_kappa = 0.0;                           // the calibrated law's kappa_n at this run's travel and angle
     double law_push = 0.0;                            // and its push
     double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
+    // A fitted slope run's height and runout by the slope law fitted to the other slope runs (NaN: not one).
+    double left_out_height = std::numeric_limits<double>::quiet_NaN();
+    double left_out_runout = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Calibration {

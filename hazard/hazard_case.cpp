@@ -162,10 +162,11 @@ const Schema& schema() {
             {.path = "model.slope_law",
              .type = K::boolean,
              .default_value = "true",
-             .meaning = "Use the calibration's slope law, if it has one: on inclined ground kappa_n and the water's "
-                        "push along the slope (v_t' = Rt kappa_t v_t + push |v_n|) measured by the CFD on one slope "
-                        "angle against travel, interpolated in the angle from the bed's law (hazard/wet_rebound.hpp). "
-                        "false: the bed's law on every slope, no push."},
+             .meaning = "Use the calibration's slope law, if it has one: on inclined ground kappa_n against the "
+                        "impact's angle from the normal and the water's push along the slope against travel (v_t' = "
+                        "Rt kappa_t v_t + push |v_n|), measured by the CFD on one slope angle, interpolated in the "
+                        "ground's angle from the bed's law (hazard/wet_rebound.hpp). false: the bed's law on every "
+                        "slope, no push."},
             {.path = "model.beta",
              .type = K::number,
              .default_value = "35.0",
