@@ -391,6 +391,8 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
         if (!p.cfd.on_bed()) {
             EXPECT_NEAR(p.lumped_runout, p.cfd.runout, 1e-3 * std::abs(p.cfd.runout)) << p.cfd.name;
         }
+        // Each fitted slope run is also predicted by the law fitted to the others (a cross-validation).
+        EXPECT_EQ(std::isfinite(p.left_out_height), p.cfd.fitted && !p.cfd.on_bed()) << p.cfd.name;
     }
     // Between the bed and the measured angle, linear in the angle; above it, the measured angle's.
     const WetRebound& fitted = c.constants.wet_rebound;
@@ -403,6 +405,17 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
     EXPECT_EQ(fitted.push(3.9, 0.0), 0.0);
     EXPECT_EQ(law.push_at(1.0), law.push.front());  // held beyond the measured travels
     EXPECT_EQ(law.push_at(9.0), law.push.back());
+    // Left out, the last run (6 sizes, 24 degrees) takes the held values of the middle one.
+    const CalibrationPoint& last = c.points[4];
+    WetRebound held = truth;
+    held.slope = {truth.slope.angle,
+                  {truth.slope.impact_angle[0], truth.slope.impact_angle[1]},
+                  {0.82, 0.90},
+                  {3.0, 4.7},
+                  {0.03, -0.3}};
+    const LumpedBounce expected = lumped_bounce(last.cfd, fluid, 1.8, 0.9, held);
+    EXPECT_NEAR(last.left_out_height, expected.height, 1e-3 * expected.height);
+    EXPECT_NEAR(last.left_out_runout, expected.runout, 1e-3 * std::abs(expected.runout));
     // A calibration file keeps it.
     const auto file = std::filesystem::temp_directory_path() / "chute_slope_calibration.yaml";
     write_calibration_file(file, c.constants);
