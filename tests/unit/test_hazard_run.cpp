@@ -233,6 +233,17 @@ FreeFallObservation closed_form_fall(const BlockFluid& fluid, double size, doubl
     return fall;
 }
 
+// A bed bounce made by the model itself (the law `truth`, C_D 1.8, C_a 0.9) at `speed`, after `travel` block sizes.
+BounceObservation bed_bounce(const BlockFluid& fluid, const WetRebound& truth, double speed, double travel = 0.0) {
+    BounceObservation o;
+    o.name = "bed";
+    o.impact_velocity = Vec2(0.0, -speed);
+    o.travel = travel;
+    o.size = 0.3, o.density = 2500.0;
+    o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
+    return o;
+}
+
 // The calibration's fits recover the constants of observations made by the lumped model itself: a free fall
 // from the closed form with C_D 1.8 and C_a 0.9, bed bounces made with kappa_n 0.7 (hazard/calibration.hpp).
 TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
@@ -242,14 +253,7 @@ TEST(HazardCalibration, RecoversTheConstantsOfItsOwnModel) {
     WetRebound truth;
     truth.kappa_n = 0.7;
     std::vector<BounceObservation> bounces;
-    for (double speed : {1.2, 1.7, 2.2}) {
-        BounceObservation o;
-        o.name = "bed";
-        o.impact_velocity = Vec2(0.0, -speed);
-        o.size = size, o.density = density;
-        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
-        bounces.push_back(o);
-    }
+    for (double speed : {1.2, 1.7, 2.2}) bounces.push_back(bed_bounce(fluid, truth, speed));
     const Calibration c = calibrate(fall, size, density, bounces, fluid);
     EXPECT_NEAR(c.constants.drag_coefficient, 1.8, 1e-9);
     EXPECT_NEAR(c.constants.added_mass_coefficient, 0.9, 1e-4);
@@ -271,15 +275,8 @@ TEST(HazardCalibration, RecoversTheWakeGrowthOfItsOwnModel) {
     truth.kappa_n = 0.62, truth.kappa_n_start = 1.0, truth.wake_length = 3.0;
     std::vector<BounceObservation> bounces;
     for (const auto& [travel, speed] :
-         std::vector<std::pair<double, double>>{{2, 1.5}, {4.5, 1.9}, {8, 2.0}, {12, 2.1}}) {
-        BounceObservation o;
-        o.name = "bed";
-        o.impact_velocity = Vec2(0.0, -speed);
-        o.travel = travel;
-        o.size = size, o.density = density;
-        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
-        bounces.push_back(o);
-    }
+         std::vector<std::pair<double, double>>{{2, 1.5}, {4.5, 1.9}, {8, 2.0}, {12, 2.1}})
+        bounces.push_back(bed_bounce(fluid, truth, speed, travel));
     const Calibration c = calibrate(fall, size, density, bounces, fluid);
     EXPECT_NEAR(c.constants.wet_rebound.kappa_n, 0.62, 1e-3);
     EXPECT_NEAR(c.constants.wet_rebound.kappa_n_start, 1.0, 1e-3);
@@ -359,14 +356,7 @@ TEST(HazardCalibration, RecoversTheSlopeLawOfItsOwnModel) {
                    {3.0, 4.7, 6.0},
                    {0.03, -0.3, -0.95}};
     std::vector<BounceObservation> bounces;
-    for (double speed : {1.5, 2.0}) {
-        BounceObservation o;
-        o.name = "bed";
-        o.impact_velocity = Vec2(0.0, -speed);
-        o.size = size, o.density = density;
-        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, truth).height;
-        bounces.push_back(o);
-    }
+    for (double speed : {1.5, 2.0}) bounces.push_back(bed_bounce(fluid, truth, speed));
     bounces.push_back(slope_bounce(fluid, truth, 30.0, 3.0, impacts[0], true));
     bounces.push_back(slope_bounce(fluid, truth, 30.0, 4.7, impacts[1], true));
     bounces.push_back(slope_bounce(fluid, truth, 30.0, 6.0, impacts[2], true));
