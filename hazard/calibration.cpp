@@ -233,8 +233,8 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
     }
 
     // The slopes (one angle): each run's own kappa_n and push, the pair that gives its bounce height and its runout
-    // (the runout rises with the push; for each push, kappa_n by bisection for the height), then the table of them
-    // against travel (wet_rebound.hpp). Runs within 0.1 block sizes of travel are averaged.
+    // (the runout rises with the push; for each push, kappa_n by bisection for the height), then the slope's law
+    // through them (slope_law_of: kappa_n against the impact angle, the push against travel; wet_rebound.hpp).
     std::vector<CalibrationPoint*> slopes;
     for (CalibrationPoint& p : out.points)
         if (p.cfd.fitted && !p.cfd.on_bed() && std::isfinite(p.cfd.runout)) slopes.push_back(&p);
