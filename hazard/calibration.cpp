@@ -282,7 +282,7 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
     for (CalibrationPoint& p : out.points) {
         p.law_kappa = k.wet_rebound.normal_kappa(p.cfd.travel, p.cfd.slope_angle, p.cfd.impact_angle());
         p.law_push = k.wet_rebound.push(p.cfd.travel, p.cfd.slope_angle);
-        const LumpedBounce b = lumped_bounce(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound);
+        const LumpedBounce b = bounce(p.cfd, k.wet_rebound);
         p.lumped_height = b.height;
         p.lumped_runout = b.runout;
     }

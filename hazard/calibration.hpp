@@ -12,9 +12,9 @@
 //        exp(-travel / wake_length) through the runs' own values, by least squares;
 //   the slope's law  from bounces on one slope angle (wet_rebound.hpp): each run's own kappa_n and push, the pair
 //        that gives its bounce height and its runout to the next impact; kappa_n tabulated against the impact's
-//        angle from the normal, the push against travel. kappa_t is not
-//        fitted (1: Rt in water, the study's assumption): the impacts' tangential velocities are too small and too
-//        scattered (0.03-0.6 m/s) to carry what the water does along the slope.
+//        angle from the normal, the push against travel. kappa_t is not fitted (1: Rt in water, the study's
+//        assumption): the impacts' tangential velocities are too scattered (0.03-1.25 m/s on the 30 degree runs)
+//        to carry what the water does along the slope.
 // Runs marked `check` are not fitted to: the calibrated model's bounce height and runout are compared with
 // theirs (the acceptance: within 15 %).
 //
@@ -49,9 +49,7 @@ struct BounceObservation {
     double size = 0.0, density = 0.0;
     double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
     bool on_bed() const { return std::abs(slope_angle) < 1e-9; }    // straight up and down: no runout
-    double impact_angle() const {  // the impact velocity's angle from the bed's normal, rad
-        return std::atan2(std::abs(impact_velocity.x()), std::abs(impact_velocity.y()));
-    }
+    double impact_angle() const { return impact_obliquity(impact_velocity.x(), impact_velocity.y()); }  // rad
 };
 
 struct BlockFluid {

@@ -45,9 +45,8 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
         const auto [kappa_low, kappa_high] = std::minmax_element(slope.kappa_n.begin(), slope.kappa_n.end());
         const auto [push_low, push_high] = std::minmax_element(slope.push.begin(), slope.push.end());
         t += printf_text(
-            "  slope law measured at %.3g degrees: kappa_n %.3g to %.3g over impact angles %.3g-%.3g degrees, push "
-            "%+.3g "
-            "to %+.3g of the normal impact speed over travels %.3g-%.3g block sizes\n",
+            "  slope law measured at %.3g degrees: kappa_n %.3g to %.3g over impact angles %.3g-%.3g degrees, "
+            "push %+.3g to %+.3g of the normal impact speed over travels %.3g-%.3g block sizes\n",
             slope.angle * 180.0 / std::numbers::pi, *kappa_low, *kappa_high,
             slope.impact_angle.front() * 180.0 / std::numbers::pi, slope.impact_angle.back() * 180.0 / std::numbers::pi,
             *push_low, *push_high, slope.travel.front(), slope.travel.back());

@@ -291,10 +291,9 @@ bool TrajectoryIntegrator::impact(Run& run, const Vec2& x, const Vec2& v) {
     // The ground's inclination at the impact (roughness included) and which way is down it.
     const double inclination = std::acos(std::clamp(n.y(), -1.0, 1.0));
     const Vec2 downslope = n.x() >= 0.0 ? tangent : Vec2(-tangent);
-    const double obliquity = std::atan2(std::abs(vt), std::abs(vn));  // the incoming velocity's angle from the normal
-    const Restitution r =
-        e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel, inclination, obliquity)
-              : Restitution{rn, rt};
+    const Restitution r = e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel, inclination,
+                                                  impact_obliquity(vt, vn))
+                                : Restitution{rn, rt};
     e.normal_restitution = r.normal;
     e.tangential_restitution = r.tangential;
     e.push = r.push * std::abs(vn);

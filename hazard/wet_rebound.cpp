@@ -22,6 +22,10 @@ double impact_stokes_number(double block_density, double normal_speed, double si
     return block_density * normal_speed * size / (9.0 * viscosity);
 }
 
+double impact_obliquity(double vt, double vn) { return std::atan2(std::abs(vt), std::abs(vn)); }
+
+double SlopeRebound::weight(double slope_angle) const { return std::clamp(std::abs(slope_angle) / angle, 0.0, 1.0); }
+
 double SlopeRebound::kappa_n_at(double at) const { return table_at(impact_angle, kappa_n, at); }
 double SlopeRebound::push_at(double at) const { return table_at(travel, push, at); }
 
@@ -32,13 +36,13 @@ double WetRebound::normal_kappa(double travel) const {
 
 double WetRebound::normal_kappa(double travel, double slope_angle, double impact_angle) const {
     if (!slope.measured()) return normal_kappa(travel);
-    const double w = std::clamp(std::abs(slope_angle) / slope.angle, 0.0, 1.0);
+    const double w = slope.weight(slope_angle);
     return (1.0 - w) * normal_kappa(travel) + w * slope.kappa_n_at(impact_angle);
 }
 
 double WetRebound::push(double travel, double slope_angle) const {
     if (!slope.measured()) return 0.0;
-    return std::clamp(std::abs(slope_angle) / slope.angle, 0.0, 1.0) * slope.push_at(travel);
+    return slope.weight(slope_angle) * slope.push_at(travel);
 }
 
 Restitution wet_restitution(const WetRebound& law, double rn, double rt, double stokes, double travel,

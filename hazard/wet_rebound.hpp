@@ -48,6 +48,8 @@ struct SlopeRebound {
     std::vector<double> impact_angle, kappa_n;  // kappa_n^s at increasing impact angles (rad, from the normal)
     std::vector<double> travel, push;           // push^s at increasing travels (block sizes)
     bool measured() const { return angle > 0.0 && !impact_angle.empty() && !travel.empty(); }
+    // How much of the slope's law ground inclined by `slope_angle` takes: 0 on the bed, 1 from the measured angle.
+    double weight(double slope_angle) const;
     double kappa_n_at(double impact_angle) const;
     double push_at(double travel) const;
 };
@@ -63,6 +65,9 @@ struct WetRebound {
     double normal_kappa(double travel, double slope_angle, double impact_angle) const;
     double push(double travel, double slope_angle) const;  // down the slope, over the normal impact speed
 };
+
+// The incoming velocity's angle from the ground's normal (rad), from its parts along (v_t) and normal to (v_n) it.
+double impact_obliquity(double vt, double vn);
 
 // rho_s U a / (9 mu).
 double impact_stokes_number(double block_density, double normal_speed, double size, double viscosity);
