@@ -1,5 +1,6 @@
 // bench_hazard: Monte Carlo trajectories per second of a hazard analysis (hazard/monte_carlo), the fjord example
-// (examples/fjord_wall: 100 segments, the study's block, per-impact draws and roughness), water and dry.
+// (examples/fjord_wall: 100 segments, the study's block, per-impact draws and roughness), water (with the
+// calibration's ground effect and without) and dry.
 //
 //   mpirun -np R bench_hazard [--trajectories N] [--repeats K] [case.yaml]
 //
@@ -37,12 +38,16 @@ int main(int argc, char** argv) {
     }
     if (rank == 0) {
         std::printf(
-            "| case | water level | ranks | trajectories | segments | best s | trajectories/s | impacts per "
-            "trajectory | runs (s) |\n|---|---|---|---|---|---|---|---|---|\n");
+            "| case | water level | ground effect | ranks | trajectories | segments | best s | trajectories/s | "
+            "impacts "
+            "per trajectory | runs (s) |\n|---|---|---|---|---|---|---|---|---|---|\n");
     }
-    for (const char* level : {"0.0", "-1000.0"}) {
-        const HazardCase c = load_hazard_case(path, {"trajectories=" + std::to_string(trajectories),
-                                                     std::string("water.level=") + level, "output.paths=0"});
+    // In water with the calibration's ground effect and without it (its cost: hazard/ground_effect.hpp), and dry.
+    for (const auto& [level, ground] :
+         {std::pair{"0.0", "true"}, std::pair{"0.0", "false"}, std::pair{"-1000.0", "true"}}) {
+        const HazardCase c =
+            load_hazard_case(path, {"trajectories=" + std::to_string(trajectories), std::string("water.level=") + level,
+                                    std::string("model.ground_effect=") + ground, "output.paths=0"});
         double best = 1e300;
         std::string runs;
         double impacts = 0.0;
@@ -60,8 +65,9 @@ int main(int argc, char** argv) {
             }
         }
         if (rank == 0)
-            std::printf("| %s | %s | %d | %ld | %zu | %.2f | %.0f | %.1f | %s |\n", c.name.c_str(), level, size,
-                        trajectories, c.segment_materials.size(), best, trajectories / best, impacts, runs.c_str());
+            std::printf("| %s | %s | %s | %d | %ld | %zu | %.2f | %.0f | %.1f | %s |\n", c.name.c_str(), level,
+                        c.settings.ground_effect.active() ? "yes" : "no", size, trajectories,
+                        c.segment_materials.size(), best, trajectories / best, impacts, runs.c_str());
     }
     MPI_Finalize();
     return 0;

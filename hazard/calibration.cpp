@@ -5,9 +5,13 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <stdexcept>
+
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
 
 #include "text_file.hpp"
 
@@ -129,39 +133,152 @@ double drag_coefficient_from_terminal_speed(double terminal_speed, double size, 
     return 2.0 * (density - f.fluid_density) * f.gravity * size / (f.fluid_density * terminal_speed * terminal_speed);
 }
 
+namespace {
+
+// The CFD's bed as a plane along tilted gravity: it descends towards +x at the slope's angle, through the origin
+// (the impact point), with the run's dry coefficients; the lumped model on it.
+struct TiltedBed {
+    Vec2 tangent, normal;
+    SlopeProfile plane;
+    std::vector<Material> materials;
+    HazardBlock block;
+    std::unique_ptr<TrajectoryIntegrator> integrator;
+
+    TiltedBed(const BounceObservation& o, const BlockFluid& f, double drag_coefficient, double added_mass_coefficient,
+              const WetRebound& law, const GroundEffect& ground)
+        : tangent(std::cos(o.slope_angle), -std::sin(o.slope_angle)),
+          normal(std::sin(o.slope_angle), std::cos(o.slope_angle)),
+          plane({-100.0 * tangent, 400.0 * tangent}, {0}, 1e30) {
+        Material m;
+        m.normal_restitution = Distribution::fixed(o.normal_restitution);
+        m.tangential_restitution = Distribution::fixed(o.tangential_restitution);
+        materials = {m};
+        TrajectorySettings settings;
+        settings.gravity = f.gravity;
+        settings.drag_coefficient = drag_coefficient;
+        settings.added_mass_coefficient = added_mass_coefficient;
+        settings.wet_rebound = law;
+        settings.ground_effect = ground;
+        settings.end_time = 30.0;
+        settings.relative_tolerance = 1e-10, settings.absolute_tolerance = 1e-12;
+        integrator = std::make_unique<TrajectoryIntegrator>(plane, materials,
+                                                            WaterProperties{f.fluid_density, f.viscosity}, settings);
+        block.size = o.size;
+        block.density = o.density;
+    }
+    TrajectoryResult fly(const Vec2& from, const Vec2& velocity, bool record_path = false) {
+        std::mt19937_64 rng(0);  // nothing is drawn: fixed coefficients, no roughness
+        return integrator->run(block, from, velocity, {}, rng, record_path);
+    }
+};
+
+}  // namespace
+
 LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
-                           double added_mass_coefficient, const WetRebound& law) {
-    const double c = std::cos(o.slope_angle), s = std::sin(o.slope_angle);
-    const Vec2 tangent(c, -s), normal(s, c);  // the plane descends towards +x at the slope's angle
-    const SlopeProfile plane({-100.0 * tangent, 400.0 * tangent}, {0}, 1e30);
-    Material ground;
-    ground.normal_restitution = Distribution::fixed(o.normal_restitution);
-    ground.tangential_restitution = Distribution::fixed(o.tangential_restitution);
-    const std::vector<Material> materials{ground};
-    TrajectorySettings settings;
-    settings.gravity = f.gravity;
-    settings.drag_coefficient = drag_coefficient;
-    settings.added_mass_coefficient = added_mass_coefficient;
-    settings.wet_rebound = law;
-    settings.end_time = 30.0;
-    settings.relative_tolerance = 1e-10, settings.absolute_tolerance = 1e-12;
-    TrajectoryIntegrator integrator(plane, materials, {f.fluid_density, f.viscosity}, settings);
+                           double added_mass_coefficient, const WetRebound& law, const GroundEffect& ground) {
+    TiltedBed bed(o, f, drag_coefficient, added_mass_coefficient, law, ground);
+    const Vec2& tangent = bed.tangent;
     // The law's rebound at the CFD's impact, then the flight to the next impact.
     const double vt = o.impact_velocity.x(), vn = o.impact_velocity.y();
     const Restitution e = wet_restitution(law, o.normal_restitution, o.tangential_restitution,
                                           impact_stokes_number(o.density, std::abs(vn), o.size, f.viscosity), o.travel,
                                           o.slope_angle, o.impact_angle());
-    const Vec2 after = (e.tangential * vt + e.push * std::abs(vn)) * tangent - e.normal * vn * normal;
-    HazardBlock block;
-    block.size = o.size;
-    block.density = o.density;
-    std::mt19937_64 rng(0);  // nothing is drawn: fixed coefficients, no roughness
-    const TrajectoryResult r = integrator.run(block, Vec2::Zero(), after, {}, rng);
+    const Vec2 after = (e.tangential * vt + e.push * std::abs(vn)) * tangent - e.normal * vn * bed.normal;
+    const TrajectoryResult r = bed.fly(Vec2::Zero(), after);
     LumpedBounce b;
     b.height = r.apexes.empty() ? 0.0 : r.apexes.front().height;
     b.runout = r.impacts.empty() ? nan : r.impacts.front().position.dot(tangent);
     return b;
 }
+
+std::vector<double> lumped_approach(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                                    double added_mass_coefficient, const GroundEffect& ground) {
+    if (o.approach_clearance.empty()) return {};
+    TiltedBed bed(o, f, drag_coefficient, added_mass_coefficient, WetRebound{}, ground);
+    const Vec2 v0 = o.approach_velocity.front();
+    const TrajectoryResult r =
+        bed.fly(o.approach_clearance.front() * bed.normal, v0.x() * bed.tangent + v0.y() * bed.normal, true);
+    if (r.impacts.empty()) throw std::logic_error(o.name + ": the lumped approach never meets the bed");
+    // The flight's points up to the impact, as (clearance, speed towards the bed), clearance falling.
+    std::vector<double> c, w;
+    for (const PathSample& p : r.path) {
+        if (p.t > r.impacts.front().t) break;
+        c.push_back(std::max(p.position.dot(bed.normal), 0.0));
+        w.push_back(-p.velocity.dot(bed.normal));
+    }
+    c.push_back(0.0);
+    w.push_back(-r.impacts.front().velocity_before.dot(bed.normal));
+    std::vector<double> speeds;
+    for (const double target : o.approach_clearance) {
+        std::size_t k = 1;
+        while (k + 1 < c.size() && c[k] > target) ++k;
+        const double span = c[k - 1] - c[k];
+        const double s = span > 0.0 ? std::clamp((c[k - 1] - target) / span, 0.0, 1.0) : 1.0;
+        speeds.push_back(w[k - 1] + s * (w[k] - w[k - 1]));
+    }
+    return speeds;
+}
+
+namespace {
+
+// The ground effect through the bed runs' approaches: strength and decay minimising the squared relative
+// differences of the normal speed at the approach samples, by Levenberg-Marquardt (Eigen, forward differences) in
+// (strength, log decay) from the best of a coarse grid. Needs two runs with an approach; none if the runs show no
+// braking (a strength below 0).
+struct ApproachResiduals {
+    using Scalar = double;
+    enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+    using InputType = Eigen::VectorXd;
+    using ValueType = Eigen::VectorXd;
+    using JacobianType = Eigen::MatrixXd;
+
+    std::vector<const BounceObservation*> runs;
+    const BlockFluid* fluid = nullptr;
+    double cd = 0.0, ca = 0.0;
+    int count = 0;
+
+    int inputs() const { return 2; }
+    int values() const { return count; }
+    int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& r) const {
+        const GroundEffect g{p[0], std::exp(p[1])};
+        int i = 0;
+        for (const BounceObservation* o : runs) {
+            const std::vector<double> model = lumped_approach(*o, *fluid, cd, ca, g);
+            for (std::size_t k = 0; k < model.size(); ++k) r[i++] = model[k] / -o->approach_velocity[k].y() - 1.0;
+        }
+        return 0;
+    }
+};
+
+bool fit_ground_effect(const std::vector<CalibrationPoint*>& beds, const BlockFluid& f, double cd, double ca,
+                       GroundEffect& out) {
+    ApproachResiduals residuals;
+    residuals.fluid = &f, residuals.cd = cd, residuals.ca = ca;
+    for (const CalibrationPoint* p : beds)
+        if (p->cfd.approach_clearance.size() >= 2) {
+            residuals.runs.push_back(&p->cfd);
+            residuals.count += static_cast<int>(p->cfd.approach_clearance.size());
+        }
+    if (residuals.runs.size() < 2) return false;
+    Eigen::VectorXd p(2), r(residuals.count);
+    double best = std::numeric_limits<double>::infinity();
+    for (const double strength : {0.5, 1.0, 2.0, 4.0, 8.0, 16.0})
+        for (const double decay : {0.1, 0.2, 0.3, 0.5, 0.8, 1.2}) {
+            const Eigen::VectorXd q{{strength, std::log(decay)}};
+            residuals(q, r);
+            if (r.squaredNorm() < best) best = r.squaredNorm(), p = q;
+        }
+    Eigen::NumericalDiff<ApproachResiduals> differences(residuals, 1e-12);  // steps of 1e-6 of the parameters
+    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<ApproachResiduals>> lm(differences);
+    lm.parameters.xtol = 1e-10;
+    lm.parameters.ftol = 1e-12;
+    lm.minimize(p);
+    if (!(p[0] > 0.0) || !std::isfinite(p[1])) return false;
+    out = {p[0], std::exp(p[1])};
+    return true;
+}
+
+}  // namespace
 
 Calibration calibrate(const FreeFallObservation& fall, double size, double density,
                       const std::vector<BounceObservation>& bounces, const BlockFluid& f, double beta) {
@@ -194,8 +311,15 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         out.points.push_back(p);
     }
     const auto bounce = [&](const BounceObservation& o, const WetRebound& law) {
-        return lumped_bounce(o, f, k.drag_coefficient, k.added_mass_coefficient, law);
+        return lumped_bounce(o, f, k.drag_coefficient, k.added_mass_coefficient, law, k.ground_effect);
     };
+    // The ground effect from the beds' approaches, before the restitution: the rebound flies through it too.
+    {
+        std::vector<CalibrationPoint*> beds;
+        for (CalibrationPoint& p : out.points)
+            if (p.cfd.fitted && p.cfd.on_bed()) beds.push_back(&p);
+        fit_ground_effect(beds, f, k.drag_coefficient, k.added_mass_coefficient, k.ground_effect);
+    }
     // The beds: each run's own kappa_n (its bounce height, by bisection within [0.05, 1 / Rn]: a wet coefficient
     // above 1 would create energy), then the wake's growth through them (three or more falls of different
     // lengths) or their least-squares constant.
@@ -285,6 +409,12 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
         const LumpedBounce b = bounce(p.cfd, k.wet_rebound);
         p.lumped_height = b.height;
         p.lumped_runout = b.runout;
+        if (!p.cfd.approach_clearance.empty()) {
+            p.approach_impact_speed =
+                lumped_approach(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.ground_effect).back();
+            p.approach_impact_speed_plain =
+                lumped_approach(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, {}).back();
+        }
     }
     return out;
 }
@@ -303,14 +433,16 @@ std::string kappa_and_push(double kappa, double push) {
 std::string calibration_points_csv(const Calibration& c) {
     std::string t =
         "run,use,slope_deg,travel,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa,"
-        "own_push,law_kappa,law_push,left_out_height,left_out_runout\n";
+        "own_push,law_kappa,law_push,left_out_height,left_out_runout,approach_from,approach_impact_speed,"
+        "approach_impact_speed_plain\n";
     for (const CalibrationPoint& p : c.points)
-        t += printf_text("%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%.9g\n",
-                         p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
-                         p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.travel, p.cfd.impact_velocity.x(),
-                         p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height, p.lumped_height, p.cfd.runout,
-                         p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push, p.left_out_height,
-                         p.left_out_runout);
+        t += printf_text(
+            "%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g\n",
+            p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
+            p.cfd.travel, p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
+            p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push, p.left_out_height,
+            p.left_out_runout, p.cfd.approach_clearance.empty() ? nan : p.cfd.approach_clearance.front(),
+            p.approach_impact_speed, p.approach_impact_speed_plain);
     return t;
 }
 
@@ -327,6 +459,26 @@ std::string calibration_markdown(const Calibration& c) {
                    "kappa_n + (kappa_n_start - kappa_n) exp(-travel / wake_length)).\n\n",
                    k.wet_rebound.kappa_n_start, k.wet_rebound.wake_length)
              : std::string(".\n\n");
+    if (const GroundEffect& g = k.ground_effect; g.active()) {
+        t += printf_text(
+            "The ground effect (ground_effect.hpp; fitted to the approach of the bed runs marked fit): the normal "
+            "drag times G(c) = %.4f exp(-c / (%.4f a)) at clearance c above the impact point. The approach flown from "
+            "the CFD's state up to 2 block sizes above the impact, its speed towards the bed at the impact:\n\n"
+            "| run | use | slope | from (sizes) | CFD | lumped | diff | lumped without the ground effect | diff |\n"
+            "|---|---|---|---|---|---|---|---|---|\n",
+            g.strength, g.decay);
+        for (const CalibrationPoint& p : c.points) {
+            if (!std::isfinite(p.approach_impact_speed)) continue;
+            const double cfd = -p.cfd.impact_velocity.y();
+            t +=
+                printf_text("| %s | %s | %.0f deg | %.2f | %.3f m/s | %.3f m/s | %+.1f %% | %.3f m/s | %+.1f %% |\n",
+                            p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
+                            p.cfd.slope_angle * 180.0 / std::numbers::pi, p.cfd.approach_clearance.front() / p.cfd.size,
+                            cfd, p.approach_impact_speed, percent(p.approach_impact_speed, cfd),
+                            p.approach_impact_speed_plain, percent(p.approach_impact_speed_plain, cfd));
+        }
+        t += "\n";
+    }
     if (const SlopeRebound& s = k.wet_rebound.slope; s.measured()) {
         t += printf_text(
             "The slope's law (measured at %.3g degrees; wet_rebound.hpp): kappa_n against the impact's angle "

@@ -10,6 +10,11 @@
 //        then their least-squares fit, weighted alike). With three or more bed runs after different falls, the
 //        wake's growth too (wet_rebound.hpp): kappa_n(travel) = kappa_n + (kappa_n_start - kappa_n)
 //        exp(-travel / wake_length) through the runs' own values, by least squares;
+//   the ground effect  from the bed runs' approach (ground_effect.hpp): the lumped block flown from the CFD's
+//        state a few block sizes above the impact point to the impact; strength and decay by least squares on its
+//        speed normal to the bed against the CFD's at equally spaced clearances (a scan of the decay refined by
+//        golden section, the strength by golden section for each). It then acts in every lumped flight below,
+//        so the restitution coefficients are those of a block braked by the water as the CFD's is;
 //   the slope's law  from bounces on one slope angle (wet_rebound.hpp): each run's own kappa_n and push, the pair
 //        that gives its bounce height and its runout to the next impact; kappa_n tabulated against the impact's
 //        angle from the normal, the push against travel. kappa_t is not fitted (1: Rt in water, the study's
@@ -47,6 +52,10 @@ struct BounceObservation {
     double rebound_height = 0.0;  // the centre's largest rise out of the bed between the first two impacts
     double runout = 0.0;          // along the bed from the first impact to the second (NaN: no second one)
     double size = 0.0, density = 0.0;
+    // The approach: the CFD block's velocity (bed frame) at clearances above the impact point, falling to 0 (the
+    // impact), from a few block sizes up (or the release, if lower). Empty: none measured.
+    std::vector<double> approach_clearance;
+    std::vector<Vec2> approach_velocity;
     double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
     bool on_bed() const { return std::abs(slope_angle) < 1e-9; }    // straight up and down: no runout
     double impact_angle() const { return impact_obliquity(impact_velocity.x(), impact_velocity.y()); }  // rad
@@ -64,6 +73,10 @@ struct CalibrationPoint {
     double law_kappa = 0.0;                           // the calibrated law's kappa_n at this run's travel and angle
     double law_push = 0.0;                            // and its push
     double lumped_height = 0.0, lumped_runout = 0.0;  // the calibrated model's
+    // The approach flown by the calibrated model from the CFD's first approach sample: its speed normal to the bed
+    // at the impact, with the ground effect and without (NaN: no approach).
+    double approach_impact_speed = std::numeric_limits<double>::quiet_NaN();
+    double approach_impact_speed_plain = std::numeric_limits<double>::quiet_NaN();
     // A fitted slope run's height and runout by the slope law fitted to the other slope runs (NaN: not one).
     double left_out_height = std::numeric_limits<double>::quiet_NaN();
     double left_out_runout = std::numeric_limits<double>::quiet_NaN();
@@ -84,7 +97,12 @@ struct LumpedBounce {
     double height = 0.0, runout = 0.0;
 };
 LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
-                           double added_mass_coefficient, const WetRebound& law);
+                           double added_mass_coefficient, const WetRebound& law, const GroundEffect& ground = {});
+
+// The lumped block's approach: flown from the CFD's first approach sample (o.approach_*) to the plane, its speed
+// normal to the plane (positive towards it) at each sample's clearance; the last is the impact's.
+std::vector<double> lumped_approach(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                                    double added_mass_coefficient, const GroundEffect& ground);
 
 Calibration calibrate(const FreeFallObservation& fall, double size, double density,
                       const std::vector<BounceObservation>& bounces, const BlockFluid& f, double beta = 35.0);

@@ -54,6 +54,20 @@ const std::vector<CaseKey>& calibration_keys() {
          .required = true,
          .min = at_least(-2.0),
          .max = at_most(2.0)},
+        {.path = "model.ground_effect",
+         .type = K::section,
+         .meaning = "The squeezed water's drag near the ground (ground_effect.hpp), if measured."},
+        {.path = "model.ground_effect.strength",
+         .type = K::number,
+         .required = true,
+         .min = at_least(0.0),
+         .max = at_most(100.0)},
+        {.path = "model.ground_effect.decay",
+         .type = K::number,
+         .required = true,
+         .min = above(0.0),
+         .max = at_most(10.0),
+         .units = "block sizes"},
         {.path = "block", .type = K::section, .required = true},
         {.path = "block.size", .type = K::number, .required = true, .min = above(0.0), .units = "m"},
         {.path = "block.density", .type = K::number, .required = true, .min = above(0.0), .units = "kg/m^3"},
@@ -105,6 +119,8 @@ CalibrationFile read_calibration_file(const std::filesystem::path& file) {
             if (y->size() != x->size()) r.fail(y_key, std::string("give one value per entry of ") + x_key);
         }
     }
+    if (r.present("model.ground_effect"))
+        c.ground_effect = {r.number("model.ground_effect.strength"), r.number("model.ground_effect.decay")};
     c.block_size = r.number("block.size");
     c.block_density = r.number("block.density");
     c.date = r.string("provenance.date");
@@ -142,6 +158,11 @@ void write_calibration_file(const std::filesystem::path& file, const Calibration
         y << YAML::Key << "travel" << YAML::Value << YAML::Flow << slope.travel;
         y << YAML::Key << "push" << YAML::Value << YAML::Flow << slope.push;
         y << YAML::EndMap;
+    }
+    if (c.ground_effect.active()) {
+        y << YAML::Key << "ground_effect" << YAML::Value << YAML::Flow << YAML::BeginMap;
+        y << YAML::Key << "strength" << YAML::Value << c.ground_effect.strength;
+        y << YAML::Key << "decay" << YAML::Value << c.ground_effect.decay << YAML::EndMap;
     }
     y << YAML::EndMap;
     y << YAML::Key << "block" << YAML::Value << YAML::Flow << YAML::BeginMap;

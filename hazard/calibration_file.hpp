@@ -4,12 +4,14 @@
 // kappa_n, kappa_t and beta, with the block they were fitted for and where they came from. YAML:
 //   model: {drag_coefficient: 1.87, added_mass_coefficient: 0.61, kappa_n: 0.78, kappa_t: 0.95, beta: 35,
 //           slope: {angle: 30, impact_angle: [3, 24], kappa_n: [0.82, 1.03],      (optional; degrees)
-//                   travel: [3.1, 6.0], push: [0.03, -0.96]}}
+//                   travel: [3.1, 6.0], push: [0.03, -0.96]},
+//           ground_effect: {strength: 2.1, decay: 0.29}}                              (optional; ground_effect.hpp)
 //   block: {size: 0.3, density: 2500}
 //   provenance: {date: ..., command: ..., runs: ..., grid: ..., points: calibration_points.csv}
 #include <filesystem>
 #include <string>
 
+#include "ground_effect.hpp"
 #include "wet_rebound.hpp"
 
 namespace chute {
@@ -17,6 +19,7 @@ namespace chute {
 struct CalibrationFile {
     double drag_coefficient = 2.0, added_mass_coefficient = 0.5;
     WetRebound wet_rebound;
+    GroundEffect ground_effect;
     double block_size = 0.0, block_density = 0.0;
     std::string date, command, runs, grid, points;
 };

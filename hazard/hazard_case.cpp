@@ -166,6 +166,14 @@ const Schema& schema() {
                         "Rt kappa_t v_t + push |v_n|), measured by the CFD on one slope angle, interpolated in the "
                         "ground's angle from the bed's law (hazard/wet_rebound.hpp). false: the bed's law on every "
                         "slope, no push."},
+            {.path = "model.ground_effect",
+             .type = K::boolean,
+             .default_value = "true",
+             .meaning =
+                 "Use the calibration's ground effect, if it has one: in water the squeezed water's drag on the "
+                 "block's velocity normal to the ground, 1/2 rho C_D A G(c) |v_n| v_n with G(c) = strength "
+                 "exp(-c / (decay a)) at clearance c (hazard/ground_effect.hpp), fitted to the CFD's approach to "
+                 "the bed. false: the free-stream drag down to the ground."},
             {.path = "model.beta",
              .type = K::number,
              .default_value = "35.0",
@@ -315,6 +323,7 @@ HazardCase read_hazard_case(const CaseReader& r, const std::string& default_name
     c.settings.wet_rebound.wake_length =
         model_number(r, "model.wake_length", cal, cal ? cal->wet_rebound.wake_length : 0.0);
     if (cal && r.boolean("model.slope_law")) c.settings.wet_rebound.slope = cal->wet_rebound.slope;
+    if (cal && r.boolean("model.ground_effect")) c.settings.ground_effect = cal->ground_effect;
     c.settings.sliding_speed = r.number("model.sliding_speed");
     c.settings.end_time = r.number("model.end_time");
     c.settings.relative_tolerance = r.number("model.relative_tolerance");

@@ -51,6 +51,10 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
             slope.impact_angle.front() * 180.0 / std::numbers::pi, slope.impact_angle.back() * 180.0 / std::numbers::pi,
             *push_low, *push_high, slope.travel.front(), slope.travel.back());
     }
+    if (const GroundEffect& g = c.settings.ground_effect; g.active())
+        t += printf_text(
+            "  ground effect: the normal drag times %.3g at the ground, falling by e every %.3g block sizes\n",
+            g.strength, g.decay);
     t += printf_text("  ends: %ld at rest, %ld past the profile's end, %ld past its start, %ld still moving at %g s\n",
                      s.ends[0], s.ends[1], s.ends[2], s.ends[3], c.settings.end_time);
     t += printf_text("  stopping x: p50 %.6g, p90 %.6g, p95 %.6g, p99 %.6g, max %.6g m\n", s.stop_p50, s.stop_p90,

@@ -20,6 +20,8 @@ namespace chute {
 struct TrajectoryIntegrator::Flight {
     const TrajectoryIntegrator* self = nullptr;
     LumpedModelConfig model;
+    GroundEffect ground;
+    double block_size = 0.0;
     double spin = 0.0;
 };
 
@@ -33,7 +35,17 @@ int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     const auto& f = *static_cast<const TrajectoryIntegrator::Flight*>(data);
     const sunrealtype* Y = N_VGetArrayPointer(y);
     sunrealtype* D = N_VGetArrayPointer(dy);
-    const Vec2 a = lumped_acceleration(f.model, Vec2(Y[2], Y[3]));
+    const Vec2 v(Y[2], Y[3]);
+    Vec2 a = lumped_acceleration(f.model, v);
+    if (f.model.fluid_density > 0.0 && f.ground.active()) {  // the squeezed water (ground_effect.hpp)
+        const SlopeProfile& profile = f.self->profile();
+        const Vec2 x(Y[0], Y[1]);
+        const Vec2& n = profile.segments()[profile.segment_at(x.x())].normal;
+        const LumpedModelConfig& m = f.model;
+        const double vn = v.dot(n), effective_mass = m.mass + m.added_mass_coefficient * m.fluid_density * m.volume;
+        a -= 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area *
+             f.ground.factor(profile.clearance(x), f.block_size) * std::abs(vn) * vn / effective_mass * n;
+    }
     D[0] = Y[2];
     D[1] = Y[3];
     D[2] = a.x();
@@ -170,6 +182,8 @@ TrajectoryResult TrajectoryIntegrator::run(const HazardBlock& block, const Vec2&
             Vec2::Zero(),
             {}};
     run.flight.self = this;
+    run.flight.ground = settings_.ground_effect;
+    run.flight.block_size = block.size;
     TrajectoryResult& out = run.out;
     out.stations.assign(stations.size(), {});
     out.max_speed = start_velocity.norm();

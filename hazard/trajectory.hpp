@@ -5,7 +5,8 @@
 // reduced to a point at its lowest face (RocFall's lumped mass). In flight it obeys the Beranger et al. (1998)
 // model of rigidbody/lumped_model.hpp where it is under the water level (gravity, buoyancy, drag C_D, added mass
 // C_a) and gravity alone above it, integrated by SUNDIALS CVODE, whose root finding stops it at the ground, at
-// the water level and at the profile's ends. Slides are solved in closed form (slide_motion.hpp). At the ground the wet
+// the water level and at the profile's ends; near the ground in water the squeezed water brakes its motion normal
+// to the ground (ground_effect.hpp). Slides are solved in closed form (slide_motion.hpp). At the ground the wet
 // rebound law (wet_rebound.hpp) acts on the velocity against the segment, its angle perturbed by the material's
 // roughness:
 //   v_n' = -e_n v_n,  v_t' = e_t v_t.
@@ -23,6 +24,7 @@
 #include <random>
 #include <vector>
 
+#include "ground_effect.hpp"
 #include "lumped_model.hpp"
 #include "material.hpp"
 #include "slope_profile.hpp"
@@ -46,6 +48,7 @@ struct TrajectorySettings {
     double gravity = 9.81;
     double drag_coefficient = 2.0, added_mass_coefficient = 0.5;  // Beranger et al. (1998), as the study took them
     WetRebound wet_rebound;
+    GroundEffect ground_effect;  // in water only (ground_effect.hpp)
     double sliding_speed = 0.1;  // m/s: a rebound slower than this normal to the ground turns into a slide
     double end_time = 600.0;     // s
     int max_impacts = 10000;     // past this, the block slides

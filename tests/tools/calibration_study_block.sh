@@ -13,11 +13,12 @@ mpirun --allow-run-as-root --oversubscribe -np 2 "$chute" calibrate "$repo/examp
 /usr/bin/python3 - "$repo/data/calibration/study_block.yaml" "$out/study_block.yaml" <<'PY'
 import sys, yaml
 shipped, made = (yaml.safe_load(open(p))["model"] for p in sys.argv[1:3])
-def flat(model):  # the slope law's lists as one number per entry
-    out = {k: v for k, v in model.items() if k != "slope"}
-    for k, v in model.get("slope", {}).items():
-        for i, x in enumerate(v if isinstance(v, list) else [v]):
-            out[f"slope.{k}[{i}]"] = x
+def flat(model):  # the sections (slope law, ground effect) as one number per entry
+    out = {k: v for k, v in model.items() if not isinstance(v, dict)}
+    for section in ("slope", "ground_effect"):
+        for k, v in model.get(section, {}).items():
+            for i, x in enumerate(v if isinstance(v, list) else [v]):
+                out[f"{section}.{k}[{i}]"] = x
     return out
 shipped, made = flat(shipped), flat(made)
 # 0.5 % of the value, and 1e-4 absolute for the push near zero.

@@ -207,6 +207,18 @@ TEST(HazardRun, CaseMistakesNameTheKey) {
         EXPECT_NE(e.find(key), std::string::npos) << slope << ": " << e;
         EXPECT_NE(e.find(says), std::string::npos) << slope << ": " << e;
     }
+    // Its ground effect: both numbers, in their bounds.
+    for (const auto& [ground, key, says] : std::vector<std::tuple<std::string, std::string, std::string>>{
+             {"{strength: -1, decay: 0.3}", "model.ground_effect.strength", "got -1"},
+             {"{strength: 2, decay: 0}", "model.ground_effect.decay", "got 0"},
+             {"{strength: 2}", "model.ground_effect.decay", "missing"}}) {
+        std::ofstream(file) << "model: {drag_coefficient: 1.7, added_mass_coefficient: 1.4, kappa_n: 0.6, kappa_t: 1, "
+                               "beta: 35, ground_effect: "
+                            << ground << "}\nblock: {size: 0.3, density: 2500}\n";
+        const std::string e = error_of(uses);
+        EXPECT_NE(e.find(key), std::string::npos) << ground << ": " << e;
+        EXPECT_NE(e.find(says), std::string::npos) << ground << ": " << e;
+    }
     std::filesystem::remove(file);
 }
 
@@ -321,6 +333,96 @@ TEST(HazardCalibration, ImpactTakesTheKappaOfItsTravel) {
     }
     EXPECT_NEAR(r.impacts[0].travel, 4.0, 1e-6);                                  // 1.2 m of fall
     EXPECT_GT(r.impacts[1].normal_restitution, r.impacts[0].normal_restitution);  // a short bounce: less wake
+}
+
+// The ground effect (hazard/ground_effect.hpp) and the bed's kappa_n are recovered from bed runs the model made
+// itself: approaches from 2 block sizes up at 1.5-2.2 m/s braked by G = 2.5 exp(-c / 0.3 a), and the rebounds
+// with kappa_n 0.7 flying through the same ground effect.
+TEST(HazardCalibration, RecoversTheGroundEffectOfItsOwnModel) {
+    const BlockFluid fluid;
+    const double size = 0.3, density = 2500.0;
+    const GroundEffect truth{2.5, 0.3};
+    WetRebound law;
+    law.kappa_n = 0.7;
+    std::vector<BounceObservation> bounces;
+    for (const double speed : {1.5, 1.9, 2.2}) {
+        BounceObservation o;
+        o.name = "bed_" + std::to_string(speed);
+        o.size = size, o.density = density;
+        for (int i = 0; i <= 12; ++i) o.approach_clearance.push_back(2.0 * size * (1.0 - i / 12.0));
+        o.approach_velocity.assign(13, Vec2(0.0, -speed));
+        const std::vector<double> approach = lumped_approach(o, fluid, 1.8, 0.9, truth);
+        for (int i = 0; i <= 12; ++i) o.approach_velocity[i] = Vec2(0.0, -approach[i]);
+        o.impact_velocity = o.approach_velocity.back();
+        o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, law, truth).height;
+        bounces.push_back(o);
+    }
+    EXPECT_LT(bounces[2].impact_velocity.norm(), 0.9 * 2.2);  // the ground effect brakes by over 10 %
+    const Calibration c = calibrate(closed_form_fall(fluid, size, density), size, density, bounces, fluid);
+    EXPECT_NEAR(c.constants.ground_effect.strength, 2.5, 2e-3);
+    EXPECT_NEAR(c.constants.ground_effect.decay, 0.3, 2e-4);
+    EXPECT_NEAR(c.constants.wet_rebound.kappa_n, 0.7, 1e-4);
+    for (const CalibrationPoint& p : c.points) {
+        EXPECT_NEAR(p.approach_impact_speed, -p.cfd.impact_velocity.y(), 1e-4);
+        EXPECT_GT(p.approach_impact_speed_plain, 1.05 * p.approach_impact_speed);
+    }
+    // A calibration file keeps it, a hazard run's flight uses it (ImpactSpeedOfTheGroundEffect).
+    const auto file = std::filesystem::temp_directory_path() / "chute_ground_effect_calibration.yaml";
+    write_calibration_file(file, c.constants);
+    const CalibrationFile back = read_calibration_file(file);
+    EXPECT_NEAR(back.ground_effect.strength, c.constants.ground_effect.strength, 1e-5 * 2.5);
+    EXPECT_NEAR(back.ground_effect.decay, c.constants.ground_effect.decay, 1e-5 * 0.3);
+    std::filesystem::remove(file);
+}
+
+// A block released at rest 0.6 m above flat ground under water meets it at the speed of the one-dimensional fall
+// with the ground effect, m_e dv/dt = (m - m_f) g - 1/2 rho C_D A (1 + G(y)) v |v| (classical RK4 with a small step,
+// written here), not at the free-stream one; in air the ground effect does nothing.
+TEST(HazardCalibration, ImpactSpeedOfTheGroundEffect) {
+    const SlopeProfile flat({Vec2(-50.0, 0.0), Vec2(50.0, 0.0)}, {0}, 100.0);  // all under water
+    const SlopeProfile dry_flat({Vec2(-50.0, 0.0), Vec2(50.0, 0.0)}, {0}, -100.0);
+    Material ground;
+    ground.normal_restitution = Distribution::fixed(0.8);
+    ground.tangential_restitution = Distribution::fixed(0.8);
+    const std::vector<Material> materials{ground};
+    TrajectorySettings settings;
+    settings.drag_coefficient = 1.7, settings.added_mass_coefficient = 1.4;
+    settings.ground_effect = {2.2, 0.29};
+    settings.end_time = 1.0;
+    settings.relative_tolerance = 1e-10, settings.absolute_tolerance = 1e-12;
+    HazardBlock block;
+    block.size = 0.3, block.density = 2500.0;
+    const double a = block.size, volume = a * a * a, rho = 1000.0, g = 9.81;
+    const double m = block.density * volume, me = m + 1.4 * rho * volume;
+    const auto accel = [&](double y, double v, double ground_factor) {
+        const double G = ground_factor * 2.2 * std::exp(-y / (0.29 * a));
+        return ((m - rho * volume) * -g - 0.5 * rho * 1.7 * a * a * (1.0 + G) * v * std::abs(v)) / me;
+    };
+    const auto rk4_impact_speed = [&](double ground_factor) {
+        double y = 0.6, v = 0.0;
+        const double h = 1e-5;
+        while (true) {
+            const double k1y = v, k1v = accel(y, v, ground_factor);
+            const double k2y = v + 0.5 * h * k1v, k2v = accel(y + 0.5 * h * k1y, v + 0.5 * h * k1v, ground_factor);
+            const double k3y = v + 0.5 * h * k2v, k3v = accel(y + 0.5 * h * k2y, v + 0.5 * h * k2v, ground_factor);
+            const double k4y = v + h * k3v, k4v = accel(y + h * k3y, v + h * k3v, ground_factor);
+            const double y1 = y + h / 6.0 * (k1y + 2 * k2y + 2 * k3y + k4y);
+            const double v1 = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
+            if (y1 <= 0.0) return -(v + (v1 - v) * y / (y - y1));  // linear to the crossing
+            y = y1, v = v1;
+        }
+    };
+    std::mt19937_64 rng(0);
+    TrajectoryIntegrator wet(flat, materials, WaterProperties{}, settings);
+    const TrajectoryResult r = wet.run(block, Vec2(0.0, 0.6), Vec2::Zero(), {}, rng);
+    ASSERT_FALSE(r.impacts.empty());
+    const double with = rk4_impact_speed(1.0), without = rk4_impact_speed(0.0);
+    EXPECT_NEAR(-r.impacts.front().velocity_before.y(), with, 1e-6 * with);
+    EXPECT_LT(with, 0.95 * without);
+    TrajectoryIntegrator dry(dry_flat, materials, WaterProperties{}, settings);
+    const TrajectoryResult d = dry.run(block, Vec2(0.0, 0.6), Vec2::Zero(), {}, rng);
+    ASSERT_FALSE(d.impacts.empty());
+    EXPECT_NEAR(-d.impacts.front().velocity_before.y(), std::sqrt(2.0 * g * 0.6), 1e-7);
 }
 
 // A slope run made by the model itself (wet_rebound.hpp's slope law `truth`) at 30 degrees.
@@ -480,6 +582,11 @@ TEST(HazardCalibration, ShippedCalibrationIsUsedByTheExample) {
     EXPECT_EQ(c.settings.wet_rebound.slope.push, f.wet_rebound.slope.push);  // the slope law is used
     const HazardCase bed_law = load_hazard_case(kExample / "case.yaml", {"model.slope_law=false"});
     EXPECT_FALSE(bed_law.settings.wet_rebound.slope.measured());
+    EXPECT_TRUE(f.ground_effect.active());  // and the ground effect
+    EXPECT_EQ(c.settings.ground_effect.strength, f.ground_effect.strength);
+    EXPECT_EQ(c.settings.ground_effect.decay, f.ground_effect.decay);
+    EXPECT_FALSE(
+        load_hazard_case(kExample / "case.yaml", {"model.ground_effect=false"}).settings.ground_effect.active());
     const HazardCase own = load_hazard_case(kExample / "case.yaml", {"model.drag_coefficient=2.0"});
     EXPECT_EQ(own.settings.drag_coefficient, 2.0);  // a key given in the case wins over the calibration
 }
