@@ -113,7 +113,7 @@ const Schema& schema() {
              .type = K::string,
              .meaning = "A calibration file written by `chute calibrate` (relative to the case file): its C_D, C_a, "
                         "kappa_n, kappa_t, beta and the wake's growth are the defaults of the keys below, and its "
-                        "slope law is used (`model.slope_law`)."},
+                        "slope law and ground effect are used (`model.slope_law`, `model.ground_effect`)."},
             {.path = "model.drag_coefficient",
              .type = K::number,
              .default_value = "2.0",

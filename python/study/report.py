@@ -133,13 +133,14 @@ def fjord_section(out, quick):
                "(data/calibration/study_block.yaml). <b>water</b> is the case as written; <b>dry</b> is the same "
                "slope with the water level below it. A collector is hit by a block that passes it at or below its "
                "height.</p>",
-               "<p class='note'>How far to trust the wet runs: the calibrated lumped model, whose wet restitution "
-               "grows with the wake over the fall and which on slopes carries the lift of oblique impacts and the "
-               "water's push along the slope (measured at 30 degrees), reproduces CFD runs it was not fitted to "
-               "within 15 % for near-normal impacts: the 30 degree slope at another impact speed (+1.8 % in "
-               "height, -6.6 % in runout) and the 1 m block at the same contact distance over size (-0.8 %); an "
-               "impact at 49 degrees from the normal is off by -38 % in height, a block arriving along the slope "
-               "(the impacts a hazard run meets most) by -37 %, and steeper than 30 degrees it is "
+               "<p class='note'>How far to trust the wet runs: the calibrated lumped model, braked near the ground "
+               "by the water it squeezes out (its impact speeds within 6 % of the CFD's on the bed), whose wet "
+               "restitution grows with the wake over the fall and which on slopes carries the lift of oblique "
+               "impacts and the water's push along the slope (measured at 30 degrees), reproduces CFD runs it was "
+               "not fitted to within 15 % for near-normal impacts: the 30 degree slope at another impact speed "
+               "(+2.0 % in height, -6.4 % in runout) and the 1 m block at the same contact distance over size "
+               "(-0.7 %); an impact at 49 degrees from the normal is off by -39 % in height, a block arriving along "
+               "the slope (the impacts a hazard run meets most) by -38 %, and steeper than 30 degrees it is "
                "an extrapolation (the talus here is 35 degrees; at 45 degrees the CFD's block is lifted by the "
                "water in its flight, -71 %): docs/validation.md, \"Hazard analysis\".</p>"]
     if model:
