@@ -142,8 +142,10 @@ struct TiltedBed {
     SlopeProfile plane;
     std::vector<Material> materials;
     HazardBlock block;
-    std::unique_ptr<TrajectoryIntegrator> integrator;
+    std::unique_ptr<TrajectoryIntegrator> integrator;  // keeps references to plane and materials: not copied
 
+    TiltedBed(const TiltedBed&) = delete;
+    TiltedBed& operator=(const TiltedBed&) = delete;
     TiltedBed(const BounceObservation& o, const BlockFluid& f, double drag_coefficient, double added_mass_coefficient,
               const WetRebound& law, const GroundEffect& ground)
         : tangent(std::cos(o.slope_angle), -std::sin(o.slope_angle)),
