@@ -231,6 +231,8 @@ int calibrate_command(const std::filesystem::path& spec_file, const std::filesys
             if (s.t[k] > impacts[0].t && s.t[k] < t_next)
                 o.rebound_height = std::max(o.rebound_height, s.y[k] - impacts[0].y);
         approach_of(s, impacts[0], o);
+        o.release_offset = chute::Vec2(s.x.front() - impacts[0].x, s.y.front() - impacts[0].y);
+        o.release_velocity = chute::Vec2(s.u.front(), s.v.front());
         bounces.push_back(o);
     }
 

@@ -193,6 +193,28 @@ LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, doub
     return b;
 }
 
+LumpedBounce lumped_bounce_from_release(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                                        double added_mass_coefficient, const WetRebound& law,
+                                        const GroundEffect& ground, double& impact_speed) {
+    impact_speed = nan;
+    if (!std::isfinite(o.release_offset.x())) return {};
+    TiltedBed bed(o, f, drag_coefficient, added_mass_coefficient, law, ground);
+    const Vec2 x0 = o.release_offset.x() * bed.tangent + o.release_offset.y() * bed.normal;
+    const TrajectoryResult r = bed.fly(x0, o.release_velocity.x() * bed.tangent + o.release_velocity.y() * bed.normal);
+    LumpedBounce b;
+    if (r.impacts.empty()) return b;
+    const Impact& first = r.impacts.front();
+    impact_speed = -first.velocity_before.dot(bed.normal);
+    b.height = 0.0;  // a rebound slower than the sliding speed: none
+    for (const Apex& a : r.apexes)
+        if (a.t > first.t) {
+            b.height = a.height;
+            break;
+        }
+    if (r.impacts.size() > 1) b.runout = (r.impacts[1].position - first.position).dot(bed.tangent);
+    return b;
+}
+
 std::vector<double> lumped_approach(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
                                     double added_mass_coefficient, const GroundEffect& ground) {
     if (o.approach_clearance.empty()) return {};
@@ -417,6 +439,8 @@ Calibration calibrate(const FreeFallObservation& fall, double size, double densi
             p.approach_impact_speed_plain =
                 lumped_approach(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, {}).back();
         }
+        p.released = lumped_bounce_from_release(p.cfd, f, k.drag_coefficient, k.added_mass_coefficient, k.wet_rebound,
+                                                k.ground_effect, p.released_impact_speed);
     }
     return out;
 }
@@ -436,15 +460,17 @@ std::string calibration_points_csv(const Calibration& c) {
     std::string t =
         "run,use,slope_deg,travel,impact_u,impact_v,stokes,cfd_height,lumped_height,cfd_runout,lumped_runout,own_kappa,"
         "own_push,law_kappa,law_push,left_out_height,left_out_runout,approach_from,approach_impact_speed,"
-        "approach_impact_speed_plain\n";
+        "approach_impact_speed_plain,released_impact_speed,released_height,released_runout\n";
     for (const CalibrationPoint& p : c.points)
         t += printf_text(
-            "%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g\n",
+            "%s,%s,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.6g,%.9g,%.9g,%.9g,%.9g,"
+            "%.9g\n",
             p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check", p.cfd.slope_angle * 180.0 / std::numbers::pi,
             p.cfd.travel, p.cfd.impact_velocity.x(), p.cfd.impact_velocity.y(), p.stokes, p.cfd.rebound_height,
             p.lumped_height, p.cfd.runout, p.lumped_runout, p.kappa, p.push, p.law_kappa, p.law_push, p.left_out_height,
             p.left_out_runout, p.cfd.approach_clearance.empty() ? nan : p.cfd.approach_clearance.front(),
-            p.approach_impact_speed, p.approach_impact_speed_plain);
+            p.approach_impact_speed, p.approach_impact_speed_plain, p.released_impact_speed, p.released.height,
+            p.released.runout);
     return t;
 }
 
@@ -516,6 +542,23 @@ std::string calibration_markdown(const Calibration& c) {
                 : "-");
     }
     t += "\n(left out: a fitted slope run predicted by the slope's law fitted to the other slope runs.)\n";
+    t += "\nThe same bounces flown from the CFD's release, as a hazard run flies them (the ground effect, the law at "
+         "the lumped block's own impact velocity and travel):\n\n"
+         "| run | use | slope | impact speed normal to the bed CFD | lumped | diff | height CFD | lumped | diff | "
+         "runout CFD | lumped | diff |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const CalibrationPoint& p : c.points) {
+        if (!std::isfinite(p.released_impact_speed)) continue;
+        const double cfd = -p.cfd.impact_velocity.y();
+        const std::string runout =
+            p.cfd.on_bed() ? "- | - | -"
+                           : printf_text("%.3f m | %.3f m | %+.1f %% (%+.3f m)", p.cfd.runout, p.released.runout,
+                                         percent(p.released.runout, p.cfd.runout), p.released.runout - p.cfd.runout);
+        t += printf_text("| %s | %s | %.0f deg | %.3f m/s | %.3f m/s | %+.1f %% | %.4f m | %.4f m | %+.1f %% | %s |\n",
+                         p.cfd.name.c_str(), p.cfd.fitted ? "fit" : "check",
+                         p.cfd.slope_angle * 180.0 / std::numbers::pi, cfd, p.released_impact_speed,
+                         percent(p.released_impact_speed, cfd), p.cfd.rebound_height, p.released.height,
+                         percent(p.released.height, p.cfd.rebound_height), runout.c_str());
+    }
     return t;
 }
 

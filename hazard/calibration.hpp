@@ -56,6 +56,9 @@ struct BounceObservation {
     // impact), from a few block sizes up (or the release, if lower). Empty: none measured.
     std::vector<double> approach_clearance;
     std::vector<Vec2> approach_velocity;
+    // Where and how the CFD block was released, from the impact point (bed frame; NaN: not known).
+    Vec2 release_offset = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+    Vec2 release_velocity = Vec2::Zero();
     double normal_restitution = 0.8, tangential_restitution = 0.8;  // the run's contact law (dry)
     bool on_bed() const { return std::abs(slope_angle) < 1e-9; }    // straight up and down: no runout
     double impact_angle() const { return impact_obliquity(impact_velocity.x(), impact_velocity.y()); }  // rad
@@ -63,6 +66,11 @@ struct BounceObservation {
 
 struct BlockFluid {
     double fluid_density = 1000.0, viscosity = 1.0e-3, gravity = 9.81;
+};
+
+// A lumped bounce on the tilted bed: its top above the plane and the runout to its next impact.
+struct LumpedBounce {
+    double height = std::numeric_limits<double>::quiet_NaN(), runout = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct CalibrationPoint {
@@ -77,6 +85,10 @@ struct CalibrationPoint {
     // at the impact, with the ground effect and without (NaN: no approach).
     double approach_impact_speed = std::numeric_limits<double>::quiet_NaN();
     double approach_impact_speed_plain = std::numeric_limits<double>::quiet_NaN();
+    // The whole bounce as a hazard run flies it: the calibrated model from the CFD's release, through its own impact
+    // (the law at its own impact velocity and travel) to the next impact (NaN: no release known).
+    LumpedBounce released;
+    double released_impact_speed = std::numeric_limits<double>::quiet_NaN();  // normal to the bed
     // A fitted slope run's height and runout by the slope law fitted to the other slope runs (NaN: not one).
     double left_out_height = std::numeric_limits<double>::quiet_NaN();
     double left_out_runout = std::numeric_limits<double>::quiet_NaN();
@@ -91,13 +103,15 @@ struct Calibration {
 
 double drag_coefficient_from_terminal_speed(double terminal_speed, double size, double density, const BlockFluid& f);
 
-// The lumped block's bounce: from the impact at `o.impact_velocity` on a plane along tilted gravity, its top
-// above the plane and the runout to its next impact.
-struct LumpedBounce {
-    double height = 0.0, runout = 0.0;
-};
+// The lumped block's bounce from the impact at `o.impact_velocity` on a plane along tilted gravity.
 LumpedBounce lumped_bounce(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
                            double added_mass_coefficient, const WetRebound& law, const GroundEffect& ground = {});
+
+// The same bounce flown from the CFD's release (o.release_*), as a hazard run would: its own impact, the law at its
+// own impact velocity and travel. `impact_speed`: its normal speed at the impact.
+LumpedBounce lumped_bounce_from_release(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
+                                        double added_mass_coefficient, const WetRebound& law,
+                                        const GroundEffect& ground, double& impact_speed);
 
 // The lumped block's approach: flown from the CFD's first approach sample (o.approach_*) to the plane, its speed
 // normal to the plane (positive towards it) at each sample's clearance; the last is the impact's.

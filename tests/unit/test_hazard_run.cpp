@@ -355,6 +355,7 @@ TEST(HazardCalibration, RecoversTheGroundEffectOfItsOwnModel) {
         for (int i = 0; i <= 12; ++i) o.approach_velocity[i] = Vec2(0.0, -approach[i]);
         o.impact_velocity = o.approach_velocity.back();
         o.rebound_height = lumped_bounce(o, fluid, 1.8, 0.9, law, truth).height;
+        o.release_offset = Vec2(0.0, 2.0 * size), o.release_velocity = Vec2(0.0, -speed);  // the approach's start
         bounces.push_back(o);
     }
     EXPECT_LT(bounces[2].impact_velocity.norm(), 0.9 * 2.2);  // the ground effect brakes by over 10 %
@@ -365,6 +366,9 @@ TEST(HazardCalibration, RecoversTheGroundEffectOfItsOwnModel) {
     for (const CalibrationPoint& p : c.points) {
         EXPECT_NEAR(p.approach_impact_speed, -p.cfd.impact_velocity.y(), 1e-4);
         EXPECT_GT(p.approach_impact_speed_plain, 1.05 * p.approach_impact_speed);
+        // Flown from the release through its own impact, the bounce is the one made from the impact.
+        EXPECT_NEAR(p.released_impact_speed, -p.cfd.impact_velocity.y(), 1e-4);
+        EXPECT_NEAR(p.released.height, p.cfd.rebound_height, 1e-3 * p.cfd.rebound_height);
     }
     // A calibration file keeps it, a hazard run's flight uses it (ImpactSpeedOfTheGroundEffect).
     const auto file = std::filesystem::temp_directory_path() / "chute_ground_effect_calibration.yaml";
