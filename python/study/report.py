@@ -140,7 +140,9 @@ def fjord_section(out, quick):
                "not fitted to within 15 % for near-normal impacts: the 30 degree slope at another impact speed "
                "(+2.0 % in height, -6.4 % in runout) and the 1 m block at the same contact distance over size "
                "(-0.7 %); an impact at 49 degrees from the normal is off by -39 % in height, a block arriving along "
-               "the slope (the impacts a hazard run meets most) by -38 %, and steeper than 30 degrees it is "
+               "the slope (the impacts a hazard run meets most) by -38 %; flown from the release as here, its "
+               "first bounce after a drop onto the 30 degree slope is a third too high (with the bed's law on "
+               "slopes, model.slope_law=false, 20-40 % too low: the two runs bracket it); steeper than 30 degrees it is "
                "an extrapolation (the talus here is 35 degrees; at 45 degrees the CFD's block is lifted by the "
                "water in its flight, -71 %): docs/validation.md, \"Hazard analysis\".</p>"]
     if model:
