@@ -147,8 +147,9 @@ def fjord_section(out, quick):
                "water in its flight, -71 %): docs/validation.md, \"Hazard analysis\".</p>"]
     if model:
         section.append(f"<p class='note'>The water run's settings (its summary.txt): {esc(model)}.</p>")
-    section.append(table_html({"title": "Water against dry: how the blocks ended, where they stopped, what they "
-                                        "brought to the collectors", "header": d["table"]["header"],
+    section.append(table_html({"title": "Water (with the slope law, and with the bed's law on every slope: the "
+                                        "bracket of the talus's bounces) against dry: how the blocks ended, where "
+                                        "they stopped, what they brought to the collectors", "header": d["table"]["header"],
                                "rows": d["table"]["rows"],
                                "note": "Stopping x: percentiles over all blocks (a block past the profile's end "
                                        "counted at its last x). Hit energy: translational and rotational, over the "
