@@ -40,11 +40,12 @@ int rhs(sunrealtype, N_Vector y, N_Vector dy, void* data) {
     if (f.model.fluid_density > 0.0 && f.ground.active()) {  // the squeezed water (ground_effect.hpp)
         const SlopeProfile& profile = f.self->profile();
         const Vec2 x(Y[0], Y[1]);
-        const Vec2& n = profile.segments()[profile.segment_at(x.x())].normal;
+        const SlopeSegment& under = profile.segments()[profile.segment_at(x.x())];
+        const Vec2& n = under.normal;
         const LumpedModelConfig& m = f.model;
         const double vn = v.dot(n), effective_mass = m.mass + m.added_mass_coefficient * m.fluid_density * m.volume;
         a -= 0.5 * m.fluid_density * m.drag_coefficient * m.frontal_area *
-             f.ground.factor(profile.clearance(x), f.block_size) * std::abs(vn) * vn / effective_mass * n;
+             f.ground.factor(n.dot(x - under.start), f.block_size) * std::abs(vn) * vn / effective_mass * n;
     }
     D[0] = Y[2];
     D[1] = Y[3];
