@@ -44,8 +44,13 @@ void DirectForcing::place_markers() {
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         for (std::size_t l = ranges_[b]; l < ranges_[b + 1]; ++l) {
             world_[l] = bodies_[b].to_world(body_frame_[l].position);
+            // A marker stands for its length of outline times the cells' extent along its normal (the kernel's
+            // thickness across the surface): dy on a face along x, dx on one along y, h on square cells at any
+            // angle. The geometric mean sqrt(dx dy) over-weighted the faces of flat cells by sqrt(dx / dy), and the
+            // forcing iteration diverged past an aspect ratio of about 20 (docs/validation.md, "Case fuzz").
             const Vec2 h = local_spacing(grid_, world_[l]);
-            volume_[l] = body_frame_[l].length * std::sqrt(h.x() * h.y());
+            const Vec2 n = bodies_[b].direction_to_world(body_frame_[l].normal);
+            volume_[l] = body_frame_[l].length * std::hypot(n.x() * h.x(), n.y() * h.y());
         }
     su_ = delta_stencils(grid_, config_.kernel, Staggering::u_face, world_);
     sv_ = delta_stencils(grid_, config_.kernel, Staggering::v_face, world_);
