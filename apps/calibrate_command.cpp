@@ -95,9 +95,10 @@ struct ContactRow {
 // The approach to the first impact (BounceObservation::approach_*): the CFD's velocity at 13 equally spaced
 // clearances above the impact point, from 2 block sizes up (or the release, if lower) to the impact itself.
 void approach_of(const Series& s, const ContactRow& impact, chute::BounceObservation& o) {
-    std::vector<double> c, u, v;  // before the impact, clearance falling
+    std::vector<double> c;  // before the impact, clearance falling
+    std::vector<chute::Vec2> velocity;
     for (std::size_t k = 0; k < s.t.size() && s.t[k] < impact.t; ++k)
-        c.push_back(s.y[k] - impact.y), u.push_back(s.u[k]), v.push_back(s.v[k]);
+        c.push_back(s.y[k] - impact.y), velocity.emplace_back(s.u[k], s.v[k]);
     if (c.size() < 2) return;
     const double top = std::min(2.0 * o.size, c.front());
     constexpr int intervals = 12;
@@ -108,12 +109,8 @@ void approach_of(const Series& s, const ContactRow& impact, chute::BounceObserva
             o.approach_velocity.emplace_back(impact.u, impact.v);
             break;
         }
-        std::size_t k = 1;
-        while (k + 1 < c.size() && c[k] > target) ++k;
-        const double span = c[k - 1] - c[k];
-        const double w = span > 0.0 ? std::clamp((c[k - 1] - target) / span, 0.0, 1.0) : 1.0;
         o.approach_clearance.push_back(target);
-        o.approach_velocity.emplace_back(u[k - 1] + w * (u[k] - u[k - 1]), v[k - 1] + w * (v[k] - v[k - 1]));
+        o.approach_velocity.push_back(chute::bracket_falling(c, target).at(velocity));
     }
 }
 

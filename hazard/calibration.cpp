@@ -233,14 +233,16 @@ std::vector<double> lumped_approach(const BounceObservation& o, const BlockFluid
     c.push_back(0.0);
     w.push_back(-r.impacts.front().velocity_before.dot(bed.normal));
     std::vector<double> speeds;
-    for (const double target : o.approach_clearance) {
-        std::size_t k = 1;
-        while (k + 1 < c.size() && c[k] > target) ++k;
-        const double span = c[k - 1] - c[k];
-        const double s = span > 0.0 ? std::clamp((c[k - 1] - target) / span, 0.0, 1.0) : 1.0;
-        speeds.push_back(w[k - 1] + s * (w[k] - w[k - 1]));
-    }
+    for (const double target : o.approach_clearance) speeds.push_back(bracket_falling(c, target).at(w));
     return speeds;
+}
+
+FallingBracket bracket_falling(const std::vector<double>& c, double target) {
+    FallingBracket b;
+    while (b.k + 1 < c.size() && c[b.k] > target) ++b.k;
+    const double span = c[b.k - 1] - c[b.k];
+    b.weight = span > 0.0 ? std::clamp((c[b.k - 1] - target) / span, 0.0, 1.0) : 1.0;
+    return b;
 }
 
 namespace {

@@ -113,6 +113,19 @@ LumpedBounce lumped_bounce_from_release(const BounceObservation& o, const BlockF
                                         double added_mass_coefficient, const WetRebound& law,
                                         const GroundEffect& ground, double& impact_speed);
 
+// Where `target` falls among the falling clearances c (c[0] > c[1] > ...): the interval [k - 1, k] and the weight
+// of c[k] in a linear interpolation, held at the ends. The CFD's approach samples and the lumped block's are both
+// read this way.
+struct FallingBracket {
+    std::size_t k = 1;
+    double weight = 1.0;
+    template <class V>
+    V at(const std::vector<V>& y) const {
+        return y[k - 1] + weight * (y[k] - y[k - 1]);
+    }
+};
+FallingBracket bracket_falling(const std::vector<double>& c, double target);
+
 // The lumped block's approach: flown from the CFD's first approach sample (o.approach_*) to the plane, its speed
 // normal to the plane (positive towards it) at each sample's clearance; the last is the impact's.
 std::vector<double> lumped_approach(const BounceObservation& o, const BlockFluid& f, double drag_coefficient,
