@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "calibration_range.hpp"
 #include "hdf5_file.hpp"
 #include "text_file.hpp"
 
@@ -51,6 +52,7 @@ std::string format_hazard_summary(const HazardCase& c, const HazardSummary& s, d
             slope.impact_angle.front() * 180.0 / std::numbers::pi, slope.impact_angle.back() * 180.0 / std::numbers::pi,
             *push_low, *push_high, slope.travel.front(), slope.travel.back());
     }
+    for (const std::string& w : calibration_range_warnings(c)) t += "  warning: " + w + "\n";
     if (const GroundEffect& g = c.settings.ground_effect; g.active())
         t += printf_text(
             "  ground effect: the normal drag times %.3g at the ground, falling by e every %.3g block sizes\n",

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "calibration.hpp"
+#include "calibration_range.hpp"
 #include "case_reader.hpp"
 #include "hazard_case.hpp"
 #include "hazard_statistics.hpp"
@@ -654,6 +655,40 @@ TEST(HazardRun, HundredsOfSegments) {
     EXPECT_EQ(s.trajectories, 300);
     EXPECT_LE(s.collectors[0].hits, s.collectors[0].passing);
     EXPECT_GT(s.collectors[0].passing, 0);
+}
+
+}  // namespace
+}  // namespace chute
+
+namespace chute {
+namespace {
+
+// A hazard case with the shipped calibration (its slope law measured at 30 degrees) warns about the wet ground
+// steeper than that, and only about it: a 40 degree stretch under the water does, the same stretch above the water
+// or at 25 degrees does not, nor does a case without the slope law.
+TEST(HazardRun, WarnsWhereTheSlopeLawIsExtrapolated) {
+    if (world_rank() != 0) GTEST_SKIP() << "one rank is enough";
+    const std::filesystem::path calibration =
+        std::filesystem::path(CHUTE_SOURCE_DIR) / "data/calibration/study_block.yaml";
+    auto case_with = [&](double angle_deg, double water_level, const std::string& extra) {
+        const double t = std::tan(angle_deg * std::numbers::pi / 180.0);
+        const std::string points = "[[0, 100], [50, " + std::to_string(100.0 - 50.0 * t) + "], [100, " +
+                                   std::to_string(100.0 - 50.0 * t) + "]]";
+        return hazard_case_from_text(
+            "trajectories: 10\nwater: {level: " + std::to_string(water_level) + "}\nprofile: {points: " + points +
+                "}\nmaterials: {rock: {}}\nblock: {size: {value: 0.3}, density: {value: 2500}}\n" +
+                "release: {x: {value: 1.0}, height: {value: 1.0}}\n" + "model: {calibration: " + calibration.string() +
+                extra + "}\n",
+            kExample);
+    };
+    const std::vector<std::string> steep = calibration_range_warnings(case_with(40.0, 200.0, ""));
+    ASSERT_EQ(steep.size(), 1u);
+    EXPECT_NE(steep[0].find("1 segment(s)"), std::string::npos) << steep[0];
+    EXPECT_NE(steep[0].find("up to 40"), std::string::npos) << steep[0];
+    EXPECT_NE(steep[0].find("model.slope_law"), std::string::npos) << steep[0];
+    EXPECT_TRUE(calibration_range_warnings(case_with(40.0, -1000.0, "")).empty());  // all dry
+    EXPECT_TRUE(calibration_range_warnings(case_with(25.0, 200.0, "")).empty());
+    EXPECT_TRUE(calibration_range_warnings(case_with(40.0, 200.0, ", slope_law: false")).empty());
 }
 
 }  // namespace
