@@ -15,7 +15,7 @@ std::vector<std::string> calibration_range_warnings(const HazardCase& c) {
     int count = 0;
     double steepest = 0.0, x_first = 0.0, x_last = 0.0;
     for (const SlopeSegment& s : profile.segments()) {
-        const double angle = std::acos(std::min(1.0, std::abs(s.normal.y())));
+        const double angle = ground_inclination(s.normal);
         // Wet: any part of it under the water (its lower end).
         if (!profile.wet(std::min(s.start.y(), s.end.y())) || angle <= law.angle + kSlack) continue;
         if (count == 0) x_first = s.start.x();

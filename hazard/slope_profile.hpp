@@ -7,6 +7,8 @@
 // x, z, material: the material of the segment that starts at that point; the last row's is not used).
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@
 namespace chute {
 
 using Vec2 = Eigen::Vector2d;
+
+// The ground's inclination from the horizontal (rad) for its unit normal out of the ground.
+inline double ground_inclination(const Vec2& normal) { return std::acos(std::clamp(normal.y(), -1.0, 1.0)); }
 
 struct SlopeSegment {
     Vec2 start, end;

@@ -304,7 +304,7 @@ bool TrajectoryIntegrator::impact(Run& run, const Vec2& x, const Vec2& v) {
     // The wake grew over the flight's chord (a flight is nearly straight in water, at about its terminal speed).
     e.travel = (x - run.flight_start).norm() / run.block.size;
     // The ground's inclination at the impact (roughness included) and which way is down it.
-    const double inclination = std::acos(std::clamp(n.y(), -1.0, 1.0));
+    const double inclination = ground_inclination(n);
     const Vec2 downslope = n.x() >= 0.0 ? tangent : Vec2(-tangent);
     const Restitution r = e.wet ? wet_restitution(settings_.wet_rebound, rn, rt, e.stokes, e.travel, inclination,
                                                   impact_obliquity(vt, vn))
