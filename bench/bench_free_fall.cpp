@@ -2,7 +2,7 @@
 // the flow (momentum, Poisson, correction), the bodies (carrier forcing, rigid-body update, contact), the
 // turbulence model (when the case runs k-epsilon) and the force measures written to the time series.
 //
-//   mpirun -np R bench_free_fall [--steps N] [--warmup N] [case.yaml]
+//   mpirun -np R bench_free_fall [--steps N] [--warmup N] [--set key=value ...] [case.yaml]
 //
 // Case: examples/free_fall_block/case.yaml by default (the study's 0.3 m block in water, k-epsilon, 20 cells
 // across, 150 x 767 cells). `--warmup` steps (default 100: the block is moving), then `--steps` (default 300) are
@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "case_file.hpp"
 #include "model.hpp"
@@ -22,8 +23,9 @@ using namespace chute;
 
 namespace {
 
-void run(const std::string& path, int steps, int warmup, int rank, int size) {
-    const CaseConfig c = load_case(path, {"time.end=100.0"});
+void run(const std::string& path, std::vector<std::string> settings, int steps, int warmup, int rank, int size) {
+    settings.insert(settings.begin(), "time.end=100.0");
+    const CaseConfig c = load_case(path, settings);
     Model model(c, MPI_COMM_WORLD);
     StageTimer stages(kStepStages);
     using clock = std::chrono::steady_clock;
@@ -40,9 +42,9 @@ void run(const std::string& path, int steps, int warmup, int rank, int size) {
     if (rank == 0) {
         const double per = 1e3 / steps;
         std::printf(
-            "case %s, %d x %d cells, %d rank(s), %d steps timed after %d (t = %.3f s, block speed %.3f m/s)\n\n",
-            path.c_str(), c.x.cells, c.y.cells, size, steps, warmup, model.flow().time(),
-            model.bodies()[0].state().velocity.norm());
+            "case %s%s, %d x %d cells, %d rank(s), %d steps timed after %d (t = %.3f s, block speed %.3f m/s)\n\n",
+            path.c_str(), settings.size() > 1 ? (" with " + settings.back()).c_str() : "", c.x.cells, c.y.cells, size,
+            steps, warmup, model.flow().time(), model.bodies()[0].state().velocity.norm());
         std::printf("| ms / step |");
         for (const auto& [stage, seconds] : stages.stages()) std::printf(" %s |", stage.c_str());
         std::printf("\n|---|");
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     int steps = 300, warmup = 100;
+    std::vector<std::string> settings;  // --set key=value: the case changed as `chute run --set` does
     std::string path = std::string(CHUTE_SOURCE_DIR) + "/examples/free_fall_block/case.yaml";
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
@@ -69,10 +72,12 @@ int main(int argc, char** argv) {
             steps = std::atoi(argv[++k]);
         else if (a == "--warmup" && k + 1 < argc)
             warmup = std::atoi(argv[++k]);
+        else if (a == "--set" && k + 1 < argc)
+            settings.push_back(argv[++k]);
         else
             path = a;
     }
-    run(path, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
+    run(path, settings, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
     MPI_Finalize();
     return 0;
 }

@@ -151,4 +151,47 @@ double Outline::signed_distance(const Vec2& p) const {
     return inside ? -d : d;
 }
 
+SurfacePoint Outline::nearest(const Vec2& p) const {
+    if (kind_ == Kind::circle) {
+        const double r = p.norm();
+        const Vec2 n = r > 0.0 ? Vec2(p / r) : Vec2(1.0, 0.0);
+        return {radius_ * n, n, r - radius_};
+    }
+    if (kind_ == Kind::segment) {
+        const Vec2 t = (vertices_[1] - vertices_[0]).normalized();
+        const Vec2 out(-t.y(), t.x());  // the fluid (left) side
+        const double d = cross(t, p - vertices_[0]);
+        return {p - d * out, out, d};
+    }
+    // The nearest point over the edges; on an edge's interior the normal is the edge's, at a vertex the direction
+    // to p (the distance field's gradient), or the mean of the two edges' normals when p is on the vertex.
+    SurfacePoint best{Vec2::Zero(), Vec2::Zero(), std::numeric_limits<double>::infinity()};
+    std::size_t best_edge = 0;
+    double best_s = 0.0;
+    for (std::size_t k = 0, l = vertices_.size() - 1; k < vertices_.size(); l = k++) {
+        const Vec2& a = vertices_[l];
+        const Vec2 e = vertices_[k] - a;
+        const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        const double d = (p - a - s * e).norm();
+        if (d < best.distance) best = {a + s * e, Vec2::Zero(), d}, best_edge = l, best_s = s;
+    }
+    auto edge_normal = [&](std::size_t l) {
+        const Vec2 e = (vertices_[(l + 1) % vertices_.size()] - vertices_[l]).normalized();
+        return Vec2(e.y(), -e.x());  // counterclockwise: outward on the right
+    };
+    const double d = signed_distance(p);
+    const Vec2 n_edge = edge_normal(best_edge);
+    if (best_s > 0.0 && best_s < 1.0)
+        best.normal = n_edge;
+    else if (best.distance > 1e-12 * reach())
+        best.normal = (d > 0.0 ? 1.0 : -1.0) * (p - best.position) / best.distance;
+    else {
+        const std::size_t other =
+            best_s == 0.0 ? (best_edge + vertices_.size() - 1) % vertices_.size() : (best_edge + 1) % vertices_.size();
+        best.normal = (n_edge + edge_normal(other)).normalized();
+    }
+    best.distance = d;
+    return best;
+}
+
 }  // namespace chute

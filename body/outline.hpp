@@ -22,6 +22,13 @@ inline Vec2 rotated(const Vec2& r, double angle) {
     return {c * r.x() - s * r.y(), s * r.x() + c * r.y()};
 }
 
+// The point of an outline nearest to a point p, with the outward normal there and p's signed distance.
+struct SurfacePoint {
+    Vec2 position;    // on the outline
+    Vec2 normal;      // outward unit normal (into the fluid); at a corner, from the corner towards p outside
+    double distance;  // signed distance of p, negative inside the solid
+};
+
 struct Marker {
     Vec2 position;  // body frame
     Vec2 normal;    // outward unit normal (into the fluid), body frame
@@ -53,6 +60,9 @@ public:
     bool contains(const Vec2& p) const;
     // Signed distance to the outline, negative inside the solid.
     double signed_distance(const Vec2& p) const;
+    // The nearest point of the outline to p (an open line: of the infinite line through it, as signed_distance).
+    // Outside a polygon's corner the normal points from the corner to p, so X_s + |d| n = p everywhere outside.
+    SurfacePoint nearest(const Vec2& p) const;
 
 private:
     enum class Kind { circle, polygon, segment };

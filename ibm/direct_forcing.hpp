@@ -31,29 +31,23 @@
 
 #include "body.hpp"
 #include "euler_lagrange.hpp"
+#include "immersed_forcing.hpp"
 
 namespace chute {
 
-struct BodyForcing {
-    Vec2 momentum_rate = Vec2::Zero();  // sum_l F_l dV_l: force on the fluid / (rho depth)  (m^3/s^2)
-    double torque_rate = 0.0;           // sum_l (X_l - x_c) x F_l dV_l about the body centre  (m^4/s^2)
-    double max_slip = 0.0;              // max_l |U_l - U_body(X_l)| after forcing (m/s)
-    double rms_slip = 0.0;
-};
-
-class DirectForcing {
+class DirectForcing final : public ImmersedForcing {
 public:
     DirectForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies);
 
     // A new step: the volume forcing follows the bodies' accelerations from zero again.
-    void begin_step();
+    void begin_step() override;
     // Force u* (owned faces) towards the bodies' velocities at their present place.
-    void apply(Velocity& star, double dt);
-    const std::vector<BodyForcing>& forcing() const { return result_; }
+    void apply(Velocity& star, double dt) override;
+    const std::vector<BodyForcing>& forcing() const override { return result_; }
 
     // Marker spacing used for body b (m).
-    double marker_spacing(std::size_t b) const { return config_.marker_spacing * cell_size_[b]; }
-    double cell_size(std::size_t b) const { return cell_size_[b]; }  // smallest grid spacing along the outline
+    double marker_spacing(std::size_t b) const override { return config_.marker_spacing * cell_size_[b]; }
+    double cell_size(std::size_t b) const override { return cell_size_[b]; }  // smallest grid spacing along the outline
 
 private:
     void place_markers();

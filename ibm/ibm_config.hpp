@@ -8,8 +8,14 @@
 namespace chute {
 
 enum class DeltaKernel { roma3, peskin4, roma3_smoothed };
+// How the surface enters the equations (immersed_forcing.hpp).
+enum class Interface { sharp, diffuse };
 
 struct IbmConfig {
+    Interface interface = Interface::diffuse;
+    int sharp_sweeps = 3;
+    bool sharp_continuity =
+        true;  // EXPERIMENT  // reconstructions per forcing of the sharp interface (sharp_forcing.hpp)
     DeltaKernel kernel = DeltaKernel::roma3_smoothed;  // Yang et al. 2009: no cell-crossing ripple
     int forcing_iterations = 10;                       // multi-direct forcing (Breugem 2012)
     int projection_passes = 1;                         // forcing and projection per step (run/step.cpp)

@@ -1,5 +1,8 @@
 #include "immersed_boundary.hpp"
 
+#include "direct_forcing.hpp"
+#include "sharp_forcing.hpp"
+
 namespace chute {
 
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings,
@@ -11,7 +14,14 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       start_momentum_(bodies.size()),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
-    forcing_ = std::make_unique<DirectForcing>(grid, settings.ibm, bodies_);
+    if (settings.ibm.interface == Interface::sharp) {
+        const SharpProfile profile = settings.wall_profile ? SharpProfile::wall_law : SharpProfile::quadratic;
+        auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance, profile,
+                                                    settings.wall_profile);
+        sharp_ = sharp.get();
+        forcing_ = std::move(sharp);
+    } else
+        forcing_ = std::make_unique<DirectForcing>(grid, settings.ibm, bodies_);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         stress_.push_back(std::make_unique<SurfaceStress>(grid, settings.ibm, bodies_[b], forcing_->marker_spacing(b)));
 }
@@ -19,6 +29,10 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 void ImmersedBoundary::begin_step(const Velocity& start) {
     for (BodyForcing& f : step_forcing_) f = BodyForcing{};
     forcing_->begin_step();
+    if (sharp_ && flow_ && !bodies_.empty()) {
+        sharp_->extend_pressure(flow_->pressure());
+        flow_->refresh_ghosts();
+    }
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
 }
@@ -55,6 +69,7 @@ std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Fie
                                                   const WallTurbulence* turbulence) {
     std::vector<BodyForces> out(bodies_.size());
     const double rho = settings_.density, depth = settings_.depth;
+    forcing_->measure_slip(vel);
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const BodyForcing& f = step_forcing_[b];
@@ -66,8 +81,9 @@ std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Fie
             r.forcing = rho * depth * (-f.momentum_rate + body.area() * body.state().acceleration);
             r.forcing_torque = rho * depth * (-f.torque_rate + body.polar_moment() * body.state().angular_acceleration);
         }
-        r.max_slip = f.max_slip;
-        r.rms_slip = f.rms_slip;
+        const bool after_projection = settings_.ibm.interface == Interface::sharp;
+        r.max_slip = after_projection ? forcing_->forcing()[b].max_slip : f.max_slip;
+        r.rms_slip = after_projection ? forcing_->forcing()[b].rms_slip : f.rms_slip;
         r.surface = stress_[b]->compute(vel, p, rho, settings_.viscosity, depth, turbulence);
     }
     return out;

@@ -23,10 +23,11 @@
 #include <vector>
 
 #include "carrier.hpp"
-#include "direct_forcing.hpp"
 #include "enclosed_momentum.hpp"
 #include "ibm_config.hpp"
+#include "immersed_forcing.hpp"
 #include "immersed_wall.hpp"
+#include "sharp_forcing.hpp"
 #include "surface_stress.hpp"
 
 namespace chute {
@@ -36,6 +37,9 @@ struct ImmersedBoundarySettings {
     IbmConfig ibm;
     double density = 1000.0, viscosity = 1e-6, depth = 1.0;  // the fluid's, and the run's span
     double image_distance = 2.0;  // cells: where wall functions sample the flow (turbulence.image_distance)
+    // With a wall-function turbulence model, its law of the wall (the sharp interface's profile beside a surface);
+    // empty: laminar.
+    WallProfile wall_profile;
 };
 
 class ImmersedBoundary final : public Carrier {
@@ -58,14 +62,18 @@ public:
         return walls_.sample(vel, k);
     }
 
-    const DirectForcing& forcing() const { return *forcing_; }
+    void attach(FlowSolver& flow) override { flow_ = &flow; }
+
+    const ImmersedForcing& forcing() const { return *forcing_; }
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 
 private:
     const Grid& grid_;
     ImmersedBoundarySettings settings_;
     std::vector<Body>& bodies_;
-    std::unique_ptr<DirectForcing> forcing_;
+    std::unique_ptr<ImmersedForcing> forcing_;
+    SharpForcing* sharp_ = nullptr;  // forcing_ when the interface is sharp
+    FlowSolver* flow_ = nullptr;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
     ImmersedWall walls_;
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body

@@ -1,9 +1,16 @@
 #include "case_settings.hpp"
 
+#include "wall_function.hpp"
+
 namespace chute {
 
 ImmersedBoundarySettings immersed_boundary_settings(const CaseConfig& c) {
-    return {c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance};
+    ImmersedBoundarySettings s{c.ibm, c.density, c.viscosity, c.depth, c.turbulence.image_distance, {}};
+    if (c.turbulence.model != TurbulenceModelType::laminar)
+        s.wall_profile = [nu = c.viscosity](double speed, double L, double y) {
+            return law_of_the_wall_speed(speed, L, y, nu);
+        };
+    return s;
 }
 
 BodyFittedSettings body_fitted_settings(const CaseConfig& c) {

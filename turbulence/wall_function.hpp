@@ -44,4 +44,23 @@ struct WallFunction {
     }
 };
 
+// The law of the wall in the two layers above (u+ = y+ below the switch, ln(E y+) / kappa above): the tangential
+// speed at distance y from a wall where it is `speed` at distance L (m/s; nu the kinematic viscosity). u_tau is
+// found from the speed at L (Newton's method on the log layer, from the viscous layer's value); the sharp immersed
+// interface reconstructs the flow beside a surface with it (ibm/sharp_forcing.hpp).
+inline double law_of_the_wall_speed(double speed, double L, double y, double nu) {
+    using C = KEpsilonConstants;
+    if (!(speed > 0.0) || !(L > 0.0)) return 0.0;
+    double u_tau = std::sqrt(speed * nu / L);  // the viscous layer: speed = u_tau^2 L / nu
+    if (u_tau * L / nu > C::y_plus_switch)
+        for (int it = 0; it < 30; ++it) {
+            const double log_term = std::log(C::E * L * u_tau / nu);
+            const double step = (u_tau * log_term / C::kappa - speed) / ((log_term + 1.0) / C::kappa);
+            u_tau = std::max(u_tau - step, 0.5 * u_tau);
+            if (std::abs(step) < 1e-12 * u_tau) break;
+        }
+    const double y_plus = std::max(y, 0.0) * u_tau / nu;
+    return u_tau * (y_plus > C::y_plus_switch ? std::log(C::E * y_plus) / C::kappa : y_plus);
+}
+
 }  // namespace chute

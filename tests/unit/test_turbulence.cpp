@@ -130,6 +130,22 @@ TEST(KEpsilon, WallFunctionIsConsistentWithTheLogLaw) {
     EXPECT_NEAR(wf.production(tau, y), wf.dissipation(k, y, nu), 1e-12 * wf.dissipation(k, y, nu));
 }
 
+// The law of the wall as the sharp interface uses it (speed at y from the speed at L): from a log-layer profile with
+// u_tau = 0.05 m/s (nu 1e-6, L 1 cm: y+ 500) it recovers the profile at y+ 250 and 50, and in the viscous layer
+// (L 0.1 mm: y+ 5) it is linear. Newton's method to 1e-12 relative: held to 1e-10.
+TEST(KEpsilon, LawOfTheWallSpeedFollowsTheTwoLayers) {
+    using C = KEpsilonConstants;
+    const double nu = 1e-6, u_tau = 0.05;
+    auto log_law = [&](double y) { return u_tau / C::kappa * std::log(C::E * u_tau * y / nu); };
+    const double L = 0.01;
+    for (double y : {0.005, 0.001, 0.01})
+        EXPECT_NEAR(law_of_the_wall_speed(log_law(L), L, y, nu), log_law(y), 1e-10 * log_law(y)) << "y " << y;
+    // Below the switch (y+ 11.53 at y = 0.23 mm) the viscous layer: u = u_tau^2 y / nu.
+    EXPECT_NEAR(law_of_the_wall_speed(log_law(L), L, 1e-4, nu), u_tau * u_tau * 1e-4 / nu, 1e-10);
+    const double speed = 0.02, Lv = 1e-4;  // y+ = sqrt(speed Lv / nu) = 1.4: viscous
+    EXPECT_NEAR(law_of_the_wall_speed(speed, Lv, 0.5 * Lv, nu), 0.5 * speed, 1e-15);
+    EXPECT_EQ(law_of_the_wall_speed(0.0, L, 0.5 * L, nu), 0.0);
+}
 // k-epsilon in still water needs a speed for the initial k: the error names the key.
 TEST(KEpsilon, StillWaterWithoutVelocityScaleIsAnError) {
     CaseConfig c = parse_case_text(R"(

@@ -1,0 +1,328 @@
+#include "sharp_forcing.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "direct_forcing.hpp"  // min_spacing_along
+
+namespace chute {
+
+std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std::vector<Vec2>& mine,
+                                       std::size_t& first) {
+    std::vector<double> flat;
+    for (const Vec2& X : mine) flat.insert(flat.end(), {X.x(), X.y()});
+    const int count = static_cast<int>(flat.size());
+    std::vector<int> counts(grid.size()), offsets(grid.size(), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, grid.comm());
+    for (int r = 1; r < grid.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    std::vector<double> all(offsets.back() + counts.back());
+    MPI_Allgatherv(flat.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, grid.comm());
+    std::vector<Vec2> points(all.size() / 2);
+    for (std::size_t k = 0; k < points.size(); ++k) points[k] = {all[2 * k], all[2 * k + 1]};
+    first = offsets[grid.rank()] / 2;
+    return bilinear_stencils(grid, s, points);
+}
+
+SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies,
+                           double image_cells, SharpProfile profile, WallProfile wall_profile)
+    : grid_(grid),
+      config_(config),
+      bodies_(bodies),
+      image_cells_(image_cells),
+      profile_(profile),
+      wall_profile_(std::move(wall_profile)),
+      uncovered_(grid, 1.0),
+      result_(bodies.size()) {
+    for (const Body& body : bodies_) cell_size_.push_back(min_spacing_along(grid_, body));
+    if (profile_ == SharpProfile::wall_law && !wall_profile_)
+        throw std::invalid_argument("SharpForcing: the wall-law profile needs the law (wall_profile)");
+}
+
+void SharpForcing::classify_component(bool is_u, Component& out) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    // Faces on a non-periodic domain boundary are the boundary conditions' (euler_lagrange.cpp, axis_points).
+    const int first_i = is_u && !grid_.x_axis().periodic() && X.offset == 0 ? 1 : 0;
+    const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
+    auto position = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
+    auto volume = [&](int i, int j) { return is_u ? X.dc(i) * Y.w(j) : X.w(i) * Y.dc(j); };
+
+    // Every body's candidates, then one entry per face: inside a body first, else the nearest surface.
+    std::vector<ForcedFace> candidates;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        const Outline& outline = body.outline();
+        const double h = cell_size_[b];
+        auto local = [&](const Vec2& p) { return rotated(p - body.state().centre, -body.state().angle); };
+        int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
+        if (outline.closed()) {
+            // Owned faces within the body's reach and two cells.
+            const Vec2 c = body.state().centre;
+            const double reach = outline.reach() + 2.0 * h;
+            while (i0 <= i1 && position(i0, 0).x() < c.x() - reach - X.w(i0)) ++i0;
+            while (i1 >= i0 && position(i1, 0).x() > c.x() + reach + X.w(i1)) --i1;
+            while (j0 <= j1 && position(0, j0).y() < c.y() - reach - Y.w(j0)) ++j0;
+            while (j1 >= j0 && position(0, j1).y() > c.y() + reach + Y.w(j1)) --j1;
+        }
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const Vec2 p = position(i, j);
+                const double phi = outline.signed_distance(local(p));
+                // A forcing face is at most one face spacing from the surface (sqrt 2 of a cell at a corner).
+                if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
+                bool forcing = false;
+                if (phi >= 0.0) {
+                    const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
+                                                position(i, j + 1)};
+                    for (const Vec2& q : neighbours) forcing = forcing || outline.signed_distance(local(q)) < 0.0;
+                    if (!forcing) continue;
+                }
+                const SurfacePoint s = outline.nearest(local(p));
+                candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, body.to_world(s.position),
+                                      body.direction_to_world(s.normal)});
+            }
+    }
+    std::unordered_map<long long, std::size_t> chosen;
+    std::vector<ForcedFace> faces;
+    for (const ForcedFace& f : candidates) {
+        const long long key = static_cast<long long>(f.j) * (nx + 2 * kGhost) + f.i;
+        auto [it, fresh] = chosen.try_emplace(key, faces.size());
+        if (fresh)
+            faces.push_back(f);
+        else if (ForcedFace& kept = faces[it->second];
+                 (f.phi < 0.0) != (kept.phi < 0.0) ? f.phi < 0.0 : f.phi < kept.phi)
+            kept = f;
+    }
+    out.solid.clear();
+    out.forcing.clear();
+    for (const ForcedFace& f : faces) (f.phi < 0.0 ? out.solid : out.forcing).push_back(f);
+
+    // Image points X_s + L n, L = image_cells h_n (h_n the cells' extent along n), at least 4/3 of phi so that the
+    // face's own weight stays at most 3/4, and with a quadratic profile a second one at L2 = L + h_n. Every rank
+    // builds the stencils of every rank's image points (gathered_stencils) and keeps its own part of each.
+    std::vector<Vec2> mine, mine2;
+    for (ForcedFace& f : out.forcing) {
+        const Vec2 n = f.normal;
+        const Vec2 h = local_spacing(grid_, f.surface);
+        const double hn = std::hypot(n.x() * h.x(), n.y() * h.y());
+        const double L = std::max(image_cells_ * hn, f.phi / 0.75);
+        f.image_distance = L;
+        mine.push_back(f.surface + L * n);
+        if (profile_ != SharpProfile::quadratic) {
+            f.weight = f.phi / L;
+            f.weight2 = 0.0;
+        } else {
+            // Lagrange weights of the quadratic through (0, U_s), (L, u_1), (L2, u_2), at phi.
+            const double L2 = L + hn, y = f.phi;
+            f.weight = y * (L2 - y) / (L * (L2 - L));
+            f.weight2 = -y * (L - y) / (L2 * (L2 - L));
+            mine2.push_back(f.surface + L2 * n);
+        }
+    }
+    if (profile_ == SharpProfile::quadratic)
+        out.images2 = gathered_stencils(grid_, is_u ? Staggering::u_face : Staggering::v_face, mine2, out.first_image);
+    out.images = gathered_stencils(grid_, is_u ? Staggering::u_face : Staggering::v_face, mine, out.first_image);
+    if (profile_ == SharpProfile::wall_law)
+        out.images_other =
+            gathered_stencils(grid_, is_u ? Staggering::v_face : Staggering::u_face, mine, out.first_image);
+}
+
+void SharpForcing::classify() {
+    classify_component(true, u_);
+    classify_component(false, v_);
+    find_covered_cells();
+    placed_ = true;
+}
+
+bool SharpForcing::inside_any(const Vec2& X) const {
+    return std::any_of(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.contains(X); });
+}
+
+bool SharpForcing::forced(bool is_u, int i, int j) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    auto position = [&](int a, int b) { return is_u ? Vec2(X.f(a), Y.c(b)) : Vec2(X.c(a), Y.f(b)); };
+    return inside_any(position(i, j)) || inside_any(position(i - 1, j)) || inside_any(position(i + 1, j)) ||
+           inside_any(position(i, j - 1)) || inside_any(position(i, j + 1));
+}
+
+void SharpForcing::find_covered_cells() {
+    for (const CoveredCell& c : covered_) uncovered_(c.i, c.j) = 1.0;
+    covered_.clear();
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    std::vector<Vec2> images;
+    std::vector<char> seen(static_cast<std::size_t>(nx) * ny, 0);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        const Outline& outline = body.outline();
+        const double h = cell_size_[b];
+        auto local = [&](const Vec2& p) { return rotated(p - body.state().centre, -body.state().angle); };
+        int i0 = 0, i1 = nx - 1, j0 = 0, j1 = ny - 1;
+        if (outline.closed()) {
+            const Vec2 c = body.state().centre;
+            const double reach = outline.reach() + 2.0 * h;
+            while (i0 <= i1 && X.f(i0 + 1) < c.x() - reach) ++i0;
+            while (i1 >= i0 && X.f(i1) > c.x() + reach) --i1;
+            while (j0 <= j1 && Y.f(j0 + 1) < c.y() - reach) ++j0;
+            while (j1 >= j0 && Y.f(j1) > c.y() + reach) --j1;
+        }
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                char& done = seen[static_cast<std::size_t>(j) * nx + i];
+                const Vec2 centre(X.c(i), Y.c(j));
+                const double phi = outline.signed_distance(local(centre));
+                const double size = std::max(X.w(i), Y.w(j));
+                if (done || phi > 1.5 * size || phi < -3.0 * size) continue;
+                if (!(forced(true, i, j) && forced(true, i + 1, j) && forced(false, i, j) && forced(false, i, j + 1)))
+                    continue;
+                done = 1;
+                const SurfacePoint s = outline.nearest(local(centre));
+                const Vec2 n = body.direction_to_world(s.normal);
+                const Vec2 at = body.to_world(s.position);
+                const Vec2 hs = local_spacing(grid_, at);
+                covered_.push_back({i, j});
+                images.push_back(at + 2.5 * std::hypot(n.x() * hs.x(), n.y() * hs.y()) * n);
+            }
+    }
+    for (const CoveredCell& c : covered_) uncovered_(c.i, c.j) = 0.0;
+    covered_images_ = gathered_stencils(grid_, Staggering::cell, images, first_covered_);
+}
+
+void SharpForcing::extend_pressure(Field2D& p) const {
+    // Each image point's value from the uncovered cells of its stencil: sum w p / sum w over them (one reduction).
+    const std::size_t n = covered_images_.size();
+    std::vector<double> sums(2 * n, 0.0);
+    for (std::size_t l = 0; l < n; ++l)
+        for (const StencilPoint& q : covered_images_[l]) {
+            const double w = q.weight * uncovered_(q.i, q.j);
+            sums[2 * l] += w * p(q.i, q.j);
+            sums[2 * l + 1] += w;
+        }
+    if (grid_.size() > 1)
+        MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    for (std::size_t k = 0; k < covered_.size(); ++k) {
+        const std::size_t l = first_covered_ + k;
+        if (sums[2 * l + 1] > 0.0) p(covered_[k].i, covered_[k].j) = sums[2 * l] / sums[2 * l + 1];
+    }
+}
+
+double SharpForcing::target(const ForcedFace& f, bool is_u, const Vec2& at) const {
+    const Vec2 U = bodies_[f.body].velocity_at(at);
+    return is_u ? U.x() : U.y();
+}
+
+std::vector<double> SharpForcing::reconstruction(const Component& c, bool is_u, const Field2D& field,
+                                                 const Field2D& other) const {
+    const std::vector<double> image = interpolate(grid_, c.images, field);
+    if (profile_ == SharpProfile::wall_law) {
+        // The velocity relative to the surface at the image point, split along the normal and the surface: the
+        // tangential part follows the law of the wall down to the face, the normal part falls linearly to zero.
+        const std::vector<double> crossing = interpolate(grid_, c.images_other, other);
+        std::vector<double> values(c.forcing.size());
+        for (std::size_t k = 0; k < c.forcing.size(); ++k) {
+            const ForcedFace& f = c.forcing[k];
+            const std::size_t l = c.first_image + k;
+            const Vec2 Us = bodies_[f.body].velocity_at(f.surface);
+            const Vec2 w = (is_u ? Vec2(image[l], crossing[l]) : Vec2(crossing[l], image[l])) - Us;
+            const double wn = w.dot(f.normal);
+            const Vec2 wt = w - wn * f.normal;
+            const double speed = wt.norm();
+            const double ratio = speed > 0.0 ? wall_profile_(speed, f.image_distance, f.phi) / speed : 0.0;
+            const Vec2 u = Us + ratio * wt + (f.phi / f.image_distance) * wn * f.normal;
+            values[k] = is_u ? u.x() : u.y();
+        }
+        return values;
+    }
+    const std::vector<double> image2 =
+        c.images2.empty() ? std::vector<double>(image.size(), 0.0) : interpolate(grid_, c.images2, field);
+    std::vector<double> values(c.forcing.size());
+    for (std::size_t k = 0; k < c.forcing.size(); ++k) {
+        const ForcedFace& f = c.forcing[k];
+        const double Us = target(f, is_u, f.surface);
+        const std::size_t l = c.first_image + k;
+        values[k] = Us + f.weight * (image[l] - Us) + f.weight2 * (image2[l] - Us);
+    }
+    return values;
+}
+
+void SharpForcing::reconstruct(Component& c, bool is_u, Field2D& field, const Field2D& other, int sweeps) const {
+    for (int s = 0; s < sweeps; ++s) {
+        const std::vector<double> values = reconstruction(c, is_u, field, other);
+        for (std::size_t k = 0; k < c.forcing.size(); ++k) field(c.forcing[k].i, c.forcing[k].j) = values[k];
+    }
+}
+
+void SharpForcing::apply(Velocity& star, double dt) {
+    const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
+    if (!placed_ || any_moves) classify();
+    std::vector<double> sums(3 * bodies_.size(), 0.0);  // momentum rate x, y and torque rate per body
+    auto account = [&](const ForcedFace& f, bool is_u, double change) {
+        const double rate = change * f.volume / dt;
+        const Vec2 m = is_u ? Vec2(rate, 0.0) : Vec2(0.0, rate);
+        sums[3 * f.body] += m.x();
+        sums[3 * f.body + 1] += m.y();
+        sums[3 * f.body + 2] += cross(f.position - bodies_[f.body].state().centre, m);
+    };
+    for (auto [c, is_u] : {std::pair{&u_, true}, std::pair{&v_, false}}) {
+        Field2D& field = is_u ? star.u : star.v;
+        for (const ForcedFace& f : c->solid) {
+            const double value = target(f, is_u, f.position);
+            account(f, is_u, value - field(f.i, f.j));
+            field(f.i, f.j) = value;
+        }
+        std::vector<double> before(c->forcing.size());
+        for (std::size_t k = 0; k < before.size(); ++k) before[k] = field(c->forcing[k].i, c->forcing[k].j);
+        reconstruct(*c, is_u, field, is_u ? star.v : star.u, config_.sharp_sweeps);
+        for (std::size_t k = 0; k < before.size(); ++k) {
+            const ForcedFace& f = c->forcing[k];
+            account(f, is_u, field(f.i, f.j) - before[k]);
+        }
+    }
+    if (grid_.size() > 1)
+        MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        result_[b].momentum_rate = Vec2(sums[3 * b], sums[3 * b + 1]);
+        result_[b].torque_rate = sums[3 * b + 2];
+    }
+}
+
+void SharpForcing::measure_slip(const Velocity& vel) {
+    if (!placed_) return;
+    // Per body: the largest and the summed squared departure of the forced faces from what the forcing would set
+    // them to now, and the count.
+    std::vector<double> largest(bodies_.size(), 0.0), sums(2 * bodies_.size(), 0.0);
+    auto record = [&](int b, double slip) {
+        largest[b] = std::max(largest[b], std::abs(slip));
+        sums[2 * b] += slip * slip;
+        sums[2 * b + 1] += 1.0;
+    };
+    for (auto [c, is_u] : {std::pair{&u_, true}, std::pair{&v_, false}}) {
+        const Field2D& field = is_u ? vel.u : vel.v;
+        for (const ForcedFace& f : c->solid) record(f.body, field(f.i, f.j) - target(f, is_u, f.position));
+        const std::vector<double> values = reconstruction(*c, is_u, field, is_u ? vel.v : vel.u);
+        for (std::size_t k = 0; k < c->forcing.size(); ++k)
+            record(c->forcing[k].body, field(c->forcing[k].i, c->forcing[k].j) - values[k]);
+    }
+    if (grid_.size() > 1) {
+        MPI_Allreduce(MPI_IN_PLACE, largest.data(), static_cast<int>(largest.size()), MPI_DOUBLE, MPI_MAX,
+                      grid_.comm());
+        MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    }
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        result_[b].max_slip = largest[b];
+        result_[b].rms_slip = sums[2 * b + 1] > 0.0 ? std::sqrt(sums[2 * b] / sums[2 * b + 1]) : 0.0;
+    }
+}
+
+std::size_t SharpForcing::solid_faces() const { return u_.solid.size() + v_.solid.size(); }
+std::size_t SharpForcing::forcing_faces() const { return u_.forcing.size() + v_.forcing.size(); }
+
+}  // namespace chute

@@ -1,0 +1,138 @@
+#pragma once
+// Sharp-interface direct forcing on the staggered grid (Fadlun, Verzicco, Orlandi & Mohd-Yusof 2000, JCP 161:35;
+// Balaras 2004, Comput. Fluids 33:375, reconstruction along the normal; Yang & Balaras 2006, JCP 215:12, moving
+// bodies): the surface enters the discrete equations where it lies, not spread over a kernel.
+//
+// Each velocity component on its own faces. With phi(x) the signed distance to the nearest body surface
+// (negative inside) and X_s, n the nearest surface point and the outward normal there (Outline::nearest):
+//   solid faces    phi < 0:  u* = U_b(x), the body's rigid velocity (the enclosed fluid moves with it)
+//   forcing faces  phi >= 0 with a face of the same component inside a body at i +- 1 or j +- 1: the velocity
+//                  reconstructed along the normal from the body's velocity at the surface and the flow at image
+//                  points X_s + L n (bilinear interpolation of the same component), with L =
+//                  turbulence.image_distance cells along the normal (2 by default, past every forcing face of a
+//                  smooth surface):
+//                    linear     u* = U_b(X_s) + (phi / L) (u(X_s + L n) - U_b(X_s)), with a wall-function
+//                               model: L is where it samples the flow (immersed_wall.hpp), so the shear
+//                               (nu + nu_w)(u_image - U_b) / L this profile sets is the wall law's;
+//                    wall_law   with a wall-function model: the tangential velocity relative to the body
+//                               follows the model's law of the wall from the image point down to the face
+//                               (u_t(y) = u_tau u+(y u_tau / nu), u_tau from u_t at L), the normal part falls
+//                               linearly: the near-wall fluid moves as the log layer says, as the first cells
+//                               of a body-fitted grid with wall functions do;
+//                    quadratic  through U_b at 0, u at L and at L + h (laminar runs): the linear profile's
+//                               error at the face, b phi (L - phi) for u = a y + b y^2, is O(h^2) and makes the
+//                               wall shear first order (DFG 2D-1's viscous drag: docs/validation.md); the
+//                               quadratic is exact for that profile, which leaves O(h^3) at the face.
+//                  Image stencils that read other forcing faces are resolved by repeating the reconstruction
+//                  (numerics.ibm.sharp_sweeps times).
+//   fluid faces    untouched.
+// A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
+// The pressure is solved on the whole grid (the fast solvers stay); the projection then moves the forced faces by
+// dt grad(phi), which the incremental projection keeps O(dt^2): measure_slip() reports it.
+// A face that leaves a moving body is next to the surface in that step (a body moves less than a cell per step),
+// so it is a forcing face and gets the reconstructed value: no face enters the fluid with a solid's history.
+// Momentum given to the fluid per unit density, depth and time, for the force measure (a):
+//   sum over the forced faces of V (u_forced - u*) / dt,   and its moment about the body's centre.
+#include <functional>
+#include <vector>
+
+#include "body.hpp"
+#include "euler_lagrange.hpp"
+#include "ibm_config.hpp"
+#include "immersed_forcing.hpp"
+
+namespace chute {
+
+// Bilinear stencils (euler_lagrange.hpp) of every rank's points, `mine` being this rank's: every rank holds its part
+// of every point's stencil, so interpolate() is collective over the gathered list; this rank's points start at
+// `first` in it. Collective.
+std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std::vector<Vec2>& mine,
+                                       std::size_t& first);
+
+// The profile between the surface and the flow beside it (above).
+enum class SharpProfile { linear, quadratic, wall_law };
+// The law of the wall (turbulence/): the tangential speed at distance y from a wall, given the speed at distance L.
+using WallProfile = std::function<double(double speed, double L, double y)>;
+
+class SharpForcing final : public ImmersedForcing {
+public:
+    // image_cells: L in cells (turbulence.image_distance).
+    SharpForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies, double image_cells,
+                 SharpProfile profile, WallProfile wall_profile = {});
+
+    // Where the bodies are at the start of the step: the forced faces, and the pressure extended into the cells
+    // whose four faces are all forced (extend_pressure). Collective.
+    void begin_step() override { classify(); }
+    void apply(Velocity& star, double dt) override;
+    const std::vector<BodyForcing>& forcing() const override { return result_; }
+    void measure_slip(const Velocity& vel) override;
+    double cell_size(std::size_t b) const override { return cell_size_[b]; }
+    double marker_spacing(std::size_t b) const override { return config_.marker_spacing * cell_size_[b]; }
+
+    // The pressure of a cell whose four faces are all forced is no one's: the projection's only use of it is to
+    // move forced faces, which the next forcing overwrites, so it drifts (tens of times the flow's dynamic
+    // pressure beside the DFG cylinder). It matters once the cell is uncovered by a moving body (Yang & Balaras
+    // 2006's field extension) and to the surface-stress probes, so it is replaced by the pressure at the image
+    // point X_s + L_p n of its centre (L_p = 2.5 cells along n): a zero normal gradient across the surface,
+    // interpolated from the other cells only (weights renormalised), so that it is a function of the fluid's
+    // pressure alone (a restart recomputes it bit for bit). Cells deeper than 3 cells inside are left: no body
+    // uncovers them within a step. Call after begin_step(); the caller refreshes the halos. Collective.
+    void extend_pressure(Field2D& p) const;
+
+    // The faces of this rank the last apply() forced (for tests and diagnostics).
+    std::size_t solid_faces() const;
+    std::size_t forcing_faces() const;
+    std::size_t covered_cells() const { return covered_.size(); }
+
+private:
+    struct ForcedFace {
+        int i, j;
+        int body;
+        double volume;                // the face's control volume per unit depth
+        Vec2 position;                // of the face
+        double phi;                   // signed distance to the body's surface (negative inside)
+        Vec2 surface;                 // X_s, the nearest surface point (world)
+        Vec2 normal;                  // the outward normal there (world)
+        double weight = 0.0;          // of (u_1 - U_s), u_1 at the first image point (forcing faces)
+        double weight2 = 0.0;         // of (u_2 - U_s), u_2 at the second (quadratic profile)
+        double image_distance = 0.0;  // L (m)
+    };
+    // One component's forced faces: the solid ones, then the forcing ones with their image points' stencils.
+    struct Component {
+        std::vector<ForcedFace> solid, forcing;
+        std::vector<Stencil> images;        // of every rank's image points, this rank's part of each
+        std::size_t first_image = 0;        // this rank's first image point among them
+        std::vector<Stencil> images2;       // the second image points (quadratic profile), in the same order
+        std::vector<Stencil> images_other;  // the other component at the image points (wall-law profile)
+    };
+    void classify();
+    void find_covered_cells();
+    bool inside_any(const Vec2& X) const;
+    bool forced(bool is_u, int i, int j) const;  // by geometry: inside, or beside a face inside
+    void classify_component(bool is_u, Component& out) const;
+    // The forcing faces' values from the image points (sweeps of the reconstruction); collective.
+    void reconstruct(Component& c, bool is_u, Field2D& f, const Field2D& other, int sweeps) const;
+    // What the forcing faces' profile gives them from `field` as it is (collective).
+    std::vector<double> reconstruction(const Component& c, bool is_u, const Field2D& field, const Field2D& other) const;
+    double target(const ForcedFace& f, bool is_u, const Vec2& at) const;
+
+    const Grid& grid_;
+    IbmConfig config_;
+    const std::vector<Body>& bodies_;
+    double image_cells_;
+    SharpProfile profile_;
+    WallProfile wall_profile_;
+    std::vector<double> cell_size_;
+    Component u_, v_;
+    struct CoveredCell {
+        int i, j;
+    };
+    std::vector<CoveredCell> covered_;  // cells whose four faces are all forced, down to 3 cells inside
+    std::vector<Stencil> covered_images_;
+    std::size_t first_covered_ = 0;
+    Field2D uncovered_;  // 0 in covered_ cells, 1 elsewhere (owned cells)
+    bool placed_ = false;
+    std::vector<BodyForcing> result_;
+};
+
+}  // namespace chute
