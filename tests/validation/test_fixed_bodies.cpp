@@ -106,34 +106,39 @@ TEST(FixedBodies, SchaeferTurek2D1Convergence) {
     EXPECT_LT(std::abs(c.cd_surface - 5.5795), 0.5 * std::abs(b.cd_surface - 5.5795));
 }
 
-// The sharp interface on the same benchmark, D/h = 20 and 40 (about 30 s on 2 ranks). Published as above. Measured
-// (2026-11-27; docs/validation.md, "Sharp interface"): (a) 5.6303 and 5.5922, errors 0.91 % and 0.23 % of the
-// reference: second order (the retraction that tunes the diffuse interface has no counterpart here), so held to
-// 0.5 % at D/h = 40, and its error must fall at least three-fold from 20 to 40 (order 1.6; measured 2.0).
-// (b) surface stress with probes at 1.5-3.5 cells: 5.4373 at D/h = 40, 2.5 % low, its viscous part converging at first
-// order as the diffuse interface's does: held to 4 % as the diffuse test. C_L as the diffuse test. The slip the
-// projection leaves on the forced faces is 0.6 % of U_max at D/h = 40: held to 1 %.
+// The sharp interface on the same benchmark, D/h = 20 and 40 (about 30 s on 2 ranks); laminar, so the faces beside
+// the surface take the quadratic profile (ibm/sharp_forcing.hpp). Published as above. Measured (2026-11-27, means
+// over t = 3.5-4; docs/validation.md, "Sharp interface"): (a) 5.5888 and 5.5826, errors 0.17 % and 0.056 % of the
+// reference (5.5808 at D/h = 80): inside the band at D/h = 40 without the retraction that tunes the diffuse
+// interface, and held there; its error must at least halve from 20 to 40 (first order; measured a third).
+// (b) with probes at 1.5-3.5 cells: 5.5216 at D/h = 40, 1.0 % low (the diffuse interface: 2.2 %), its pressure part
+// converged (3.629, 3.630 at 40, 80), its viscous part converging at order 1.7: held to 1.5 %. Delta p and C_L as
+// the diffuse test. The slip the projection leaves on the forced faces: 0.5 % of U_max at D/h = 40, held to 1 %.
 TEST(FixedBodies, SchaeferTurek2D1Sharp) {
     const Coefficients coarse = dfg_2d1(20, 8.0, kSharp), r = dfg_2d1(40, 8.0, kSharp);
     const double reference = 5.5795;
-    EXPECT_NEAR(r.cd_forcing, reference, 0.005 * reference);
-    EXPECT_LT(std::abs(r.cd_forcing - reference), std::abs(coarse.cd_forcing - reference) / 3.0);
+    EXPECT_GE(r.cd_forcing, 5.57);
+    EXPECT_LE(r.cd_forcing, 5.59);
+    EXPECT_LT(std::abs(r.cd_forcing - reference), 0.5 * std::abs(coarse.cd_forcing - reference));
     EXPECT_NEAR(r.delta_p, 0.11752, 0.02 * 0.11752);
-    EXPECT_NEAR(r.cd_surface, reference, 0.04 * reference);
+    EXPECT_NEAR(r.cd_surface, reference, 0.015 * reference);
     EXPECT_NEAR(r.cl_forcing, 0.010619, 0.0015);
     EXPECT_LT(r.slip, 0.01);
 }
 
-// The sharp interface's grid convergence (slow): D/h = 20, 40, 80; the numbers go to docs/validation.md.
+// The sharp interface's grid convergence (slow): D/h = 20, 40, 80; the numbers go to docs/validation.md. The issue
+// (sharp corners) asks the surface-stress drag (b) to converge at order 1.5 or better; measured at t = 4 (means over
+// 3.5-4): 5.4320, 5.5216, 5.5543, order 1.45 from the differences: a known failure, kept as the record. (a) is held
+// inside the band at D/h = 80 and to order 1.5 (measured 1.78).
 TEST(FixedBodies, SchaeferTurek2D1SharpConvergence) {
     const Coefficients a = dfg_2d1(20, 8.0, kSharp), b = dfg_2d1(40, 8.0, kSharp), c = dfg_2d1(80, 8.0, kSharp);
-    const double reference = 5.5795;
     const double order_a = std::log2(std::abs(a.cd_forcing - b.cd_forcing) / std::abs(b.cd_forcing - c.cd_forcing));
     const double order_b = std::log2(std::abs(a.cd_surface - b.cd_surface) / std::abs(b.cd_surface - c.cd_surface));
     if (root()) std::printf("DFG 2D-1 sharp: observed order of C_D (a) %.2f, (b) %.2f\n", order_a, order_b);
-    EXPECT_GE(order_a, 1.8);
-    EXPECT_NEAR(c.cd_forcing, reference, 0.002 * reference);
-    EXPECT_LT(std::abs(c.cd_surface - reference), std::abs(b.cd_surface - reference));
+    EXPECT_GE(c.cd_forcing, 5.57);
+    EXPECT_LE(c.cd_forcing, 5.59);
+    EXPECT_GE(order_a, 1.5);
+    EXPECT_GE(order_b, 1.5);
 }
 
 namespace {
