@@ -1,5 +1,7 @@
 #include "immersed_boundary.hpp"
 
+#include <stdexcept>
+
 #include "direct_forcing.hpp"
 #include "sharp_forcing.hpp"
 
@@ -15,7 +17,22 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
     if (settings.ibm.interface == Interface::sharp) {
-        const SharpProfile profile = settings.wall_profile ? SharpProfile::wall_law : SharpProfile::quadratic;
+        using P = IbmConfig::SharpProfileChoice;
+        const P choice = settings.ibm.sharp_profile;
+        // The law of the wall has no value inside a body: ghost faces take the linear profile with a wall model.
+        const bool ghost = settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost;
+        SharpProfile profile = !settings.wall_profile ? SharpProfile::quadratic
+                               : ghost                ? SharpProfile::linear
+                                                      : SharpProfile::wall_law;
+        if (choice == P::linear) profile = SharpProfile::linear;
+        if (choice == P::quadratic) profile = SharpProfile::quadratic;
+        if (choice == P::wall_law) {
+            if (!settings.wall_profile)
+                throw std::invalid_argument(
+                    "numerics.ibm.sharp_profile: wall_law needs a turbulence model with wall functions "
+                    "(turbulence.model: k_epsilon)");
+            profile = SharpProfile::wall_law;
+        }
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance, profile,
                                                     settings.wall_profile);
         sharp_ = sharp.get();

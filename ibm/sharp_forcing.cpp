@@ -35,6 +35,7 @@ SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std:
       bodies_(bodies),
       image_cells_(image_cells),
       profile_(profile),
+      ghost_(config.sharp_faces == IbmConfig::SharpFaces::ghost),
       wall_profile_(std::move(wall_profile)),
       uncovered_(grid, 1.0),
       result_(bodies.size()) {
@@ -76,16 +77,17 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 const double phi = outline.signed_distance(local(p));
                 // A forcing face is at most one face spacing from the surface (sqrt 2 of a cell at a corner).
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
-                bool forcing = false;
-                if (phi >= 0.0) {
-                    const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
-                                                position(i, j + 1)};
-                    for (const Vec2& q : neighbours) forcing = forcing || outline.signed_distance(local(q)) < 0.0;
-                    if (!forcing) continue;
-                }
+                // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
+                const bool inside = phi < 0.0;
+                if (ghost_ && !inside) continue;  // ghost cells: only inside faces; forcing: inside and outside
+                bool across = false;
+                const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
+                                            position(i, j + 1)};
+                for (const Vec2& q : neighbours) across = across || (outline.signed_distance(local(q)) < 0.0) != inside;
+                if (!inside && !across) continue;
                 const SurfacePoint s = outline.nearest(local(p));
                 candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, body.to_world(s.position),
-                                      body.direction_to_world(s.normal)});
+                                      body.direction_to_world(s.normal), ghost_ ? across : !inside});
             }
     }
     std::unordered_map<long long, std::size_t> chosen;
@@ -101,7 +103,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     }
     out.solid.clear();
     out.forcing.clear();
-    for (const ForcedFace& f : faces) (f.phi < 0.0 ? out.solid : out.forcing).push_back(f);
+    for (const ForcedFace& f : faces) (f.reconstructed ? out.forcing : out.solid).push_back(f);
 
     // Image points X_s + L n, L = image_cells h_n (h_n the cells' extent along n), at least 4/3 of phi so that the
     // face's own weight stays at most 3/4, and with a quadratic profile a second one at L2 = L + h_n. Every rank
@@ -148,6 +150,7 @@ bool SharpForcing::forced(bool is_u, int i, int j) const {
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
     auto position = [&](int a, int b) { return is_u ? Vec2(X.f(a), Y.c(b)) : Vec2(X.c(a), Y.f(b)); };
+    if (ghost_) return inside_any(position(i, j));
     return inside_any(position(i, j)) || inside_any(position(i - 1, j)) || inside_any(position(i + 1, j)) ||
            inside_any(position(i, j - 1)) || inside_any(position(i, j + 1));
 }

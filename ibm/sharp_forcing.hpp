@@ -93,6 +93,7 @@ private:
         double phi;                   // signed distance to the body's surface (negative inside)
         Vec2 surface;                 // X_s, the nearest surface point (world)
         Vec2 normal;                  // the outward normal there (world)
+        bool reconstructed = false;   // set from the profile (a forcing or ghost face), else to the body's velocity
         double weight = 0.0;          // of (u_1 - U_s), u_1 at the first image point (forcing faces)
         double weight2 = 0.0;         // of (u_2 - U_s), u_2 at the second (quadratic profile)
         double image_distance = 0.0;  // L (m)
@@ -121,6 +122,7 @@ private:
     const std::vector<Body>& bodies_;
     double image_cells_;
     SharpProfile profile_;
+    bool ghost_;  // numerics.ibm.sharp_faces: ghost
     WallProfile wall_profile_;
     std::vector<double> cell_size_;
     Component u_, v_;
