@@ -170,8 +170,8 @@ void check_interface(const CaseConfig& c, std::vector<std::string>& out) {
     });
     if (c.turbulence.model != TurbulenceModelType::laminar)
         out.push_back("numerics.ibm.interface: sharp with turbulence.model " + std::string("k_epsilon") +
-                      " is not validated: the near-wall flow stays attached along a square's sides (the Lyn square's "
-                      "C_D 0.9-1.3 against 2.04 body-fitted; docs/limitations.md); use the diffuse interface");
+                      " is not validated: a square sheds too weakly (the Lyn square's C_D 0.9-1.3 against 2.04 "
+                      "body-fitted; docs/limitations.md); use the diffuse interface");
     if (moving)
         out.push_back(
             "numerics.ibm.interface: sharp on a moving body is not validated: its force ripples by 3.7-6.9 % as "
