@@ -1,11 +1,12 @@
 // Fuzzing whole runs: mutated example cases run by the chute binary for two steps (label slow, not in CI).
 //
-// Checks: 360 cases, 20 from each example (examples/*/*.yaml), each the example with one or two of its
-// values swapped through --set for an extreme or a rescaled copy (tests/fuzz/case_mutator.hpp: 0, -1,
+// Checks: 20 cases from each example (examples/*/*.yaml; 620 from 31 on 2026-11-27), each the example with one or two
+// of its values swapped through --set for an extreme or a rescaled copy (tests/fuzz/case_mutator.hpp: 0, -1,
 // +-1e300, nan, inf, 2147483647, 1e6, [], ..., or the value x10, x0.1, x2, x0.5, negated, +1), so the YAML
 // stays valid and a good share pass the reader and run. Each runs as
 //   chute run EXAMPLE --set KEY=VALUE [--set KEY=VALUE] --set time.max_steps=2 --no-plots --out DIR
-// under a 30 s wall-clock limit (a case that reaches it is run again once, in case the machine stalled).
+// under a 30 s wall-clock limit; a case that reaches it is run again once, in case the machine stalled, under a limit
+// that scales with its cell count (time_limit below: a case made 100 times finer is not a hang).
 // Allowed exit codes: 0 (ran), 2 (the case was rejected, with its message), 3 (the solver stopped the run
 // with a message), 4 (a result could not be written, with its message). Anything else fails: a signal
 // (SIGSEGV, SIGABRT, killed), exit 1 (an exception the tool did not expect: std::bad_alloc,
@@ -13,7 +14,7 @@
 // without end). The k-epsilon sub-steps are bounded (turbulence.max_substeps), so a large eddy viscosity is
 // no excuse for a hang. Each failure is reported with its command line, which reproduces it from the source
 // folder.
-//   ctest -R case_fuzz_runs --output-on-failure        (from build/; about 5 min on 2 cores, more per hang)
+//   ctest -R case_fuzz_runs --output-on-failure        (from build/; about 8 min on 2 cores, more per hang)
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -43,6 +44,11 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kSeed = 20240615;
 constexpr int kCasesPerExample = 20;
 constexpr int kTimeLimitSeconds = 30;
+// Two steps cost about 20 us per cell at worst: the free fall with 100 times more cells along y (150 x 76700, 11.5 M
+// cells, cells 100 times flatter than wide) takes 98-118 s per step on one core, most of it the k-epsilon sub-steps
+// its flat cells need (docs/validation.md, "Case fuzz of whole runs"), about 10 us per cell and step. Twice that for a
+// machine shared with another job: 40 us per cell for the two steps.
+constexpr double kSecondsPerCell = 40e-6;
 constexpr long kLogBytes = 10000000;  // a run writing more is stopped (SIGPIPE once the log is full)
 constexpr int kLogFlooded = 128 + SIGPIPE;
 
@@ -87,13 +93,30 @@ struct Outcome {
     std::string last_line;  // the message the tool ended with
 };
 
-Outcome run(const std::string& args, const fs::path& log) {
+// The limit for a case of `cells` cells (0: unknown): the 30 s floor, or the scaled time of its two steps.
+double time_limit(long long cells) { return std::max<double>(kTimeLimitSeconds, kSecondsPerCell * cells); }
+
+// The cells the tool's first line names ("chute: case 'x', NX x NY cells on ..."); 0 if it printed none.
+long long cells_in(const fs::path& log) {
+    std::ifstream in(log);
+    std::string line;
+    while (std::getline(in, line)) {
+        const std::size_t at = line.find(" cells on ");
+        const std::size_t comma = line.rfind(", ", at);
+        if (line.rfind("chute: case", 0) != 0 || at == std::string::npos || comma == std::string::npos) continue;
+        long long nx = 0, ny = 0;
+        if (std::sscanf(line.c_str() + comma + 2, "%lld x %lld", &nx, &ny) == 2) return nx * ny;
+    }
+    return 0;
+}
+
+Outcome run(const std::string& args, const fs::path& log, double limit) {
     // From the source folder: the example paths in the report are relative to it. Through bash, for pipefail:
     // the exit code is the tool's (or timeout's), not that of the head that caps the log.
     const fs::path script = log.parent_path() / "run.sh";
-    std::ofstream(script) << "set -o pipefail\ncd '" << CHUTE_SOURCE_DIR << "' && timeout -k 5 " << kTimeLimitSeconds
-                          << " " << CHUTE_BINARY << " " << args << " 2>&1 | head -c " << kLogBytes << " > '"
-                          << log.string() << "'\n";
+    std::ofstream(script) << "set -o pipefail\ncd '" << CHUTE_SOURCE_DIR << "' && timeout -k 5 " << limit << " "
+                          << CHUTE_BINARY << " " << args << " 2>&1 | head -c " << kLogBytes << " > '" << log.string()
+                          << "'\n";
     const std::string cmd = "bash '" + script.string() + "'";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
@@ -136,11 +159,14 @@ TEST(CaseFuzzRuns, MutatedExamplesRunOrStopWithAMessage) {
             std::string args = "run " + quoted(fs::relative(examples[e], CHUTE_SOURCE_DIR).string());
             for (const std::string& s : sets) args += " --set " + quoted(s);
             args += " --set time.max_steps=2 --no-plots --out ";
-            Outcome o = run(args + quoted(out.string()), dir / "chute.log");
-            // A time-out is run again once: on a shared machine another job can stall a run that is not stuck.
-            if (o.seconds >= kTimeLimitSeconds) {
+            double limit = kTimeLimitSeconds;
+            Outcome o = run(args + quoted(out.string()), dir / "chute.log", limit);
+            // A time-out is run again once: on a shared machine another job can stall a run that is not stuck, and a
+            // mutated case can be a hundred times larger than its example (its limit scales with its cells).
+            if (o.seconds >= limit) {
                 fs::remove_all(out);
-                o = run(args + quoted(out.string()), dir / "chute.log");
+                limit = time_limit(cells_in(dir / "chute.log"));
+                o = run(args + quoted(out.string()), dir / "chute.log", limit);
             }
             fs::remove_all(out);
             ++cases;
@@ -152,7 +178,7 @@ TEST(CaseFuzzRuns, MutatedExamplesRunOrStopWithAMessage) {
             report += line;
             if (allowed) continue;
             // timeout(1) sends SIGTERM at the limit, which a run stuck inside a step does not heed, then SIGKILL.
-            const bool hang = o.seconds >= kTimeLimitSeconds;
+            const bool hang = o.seconds >= limit;
             ++(hang ? hangs : crashes);
             ADD_FAILURE() << (hang                         ? "a hang (time limit reached)"
                               : o.exit_code == kLogFlooded ? "a flood of output (over 10 MB)"
