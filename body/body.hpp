@@ -57,7 +57,9 @@ public:
     Vec2 velocity_at(const Vec2& X) const {
         return state_.velocity + state_.angular_velocity * perp(X - state_.centre);
     }
-    bool contains(const Vec2& X) const { return outline_.contains(rotated(X - state_.centre, -state_.angle)); }
+    // The body-frame point of a world point X (the inverse of to_world).
+    Vec2 to_body(const Vec2& X) const { return rotated(X - state_.centre, -state_.angle); }
+    bool contains(const Vec2& X) const { return outline_.contains(to_body(X)); }
 
     double area() const { return outline_.area(); }
     double polar_moment() const { return outline_.polar_moment(); }

@@ -84,7 +84,7 @@ void DirectForcing::find_interior_faces() {
         // centred there raised the accelerated square's added mass by 10 % (docs/validation.md).
         const double start = kernel_support(config_.kernel) + config_.retraction, ramp = config_.volume_ramp;
         auto share = [&](const Vec2& p) {
-            const double d = -body.outline().signed_distance(rotated(p - c, -body.state().angle)) / h;
+            const double d = -body.outline().signed_distance(body.to_body(p)) / h;
             if (ramp == 0.0) return d > start ? 1.0 : 0.0;
             return std::clamp((d - start) / ramp, 0.0, 1.0);
         };

@@ -7,6 +7,32 @@
 
 namespace chute {
 
+namespace {
+
+// The sharp interface's profile (numerics.ibm.sharp_profile). Automatic: quadratic in laminar runs, the law of the
+// wall with a wall-function model, and with ghost faces the linear profile (the law of the wall has no value inside).
+SharpProfile sharp_profile(const ImmersedBoundarySettings& settings) {
+    using P = IbmConfig::SharpProfileChoice;
+    switch (settings.ibm.sharp_profile) {
+        case P::linear:
+            return SharpProfile::linear;
+        case P::quadratic:
+            return SharpProfile::quadratic;
+        case P::wall_law:
+            if (!settings.wall_profile)
+                throw std::invalid_argument(
+                    "numerics.ibm.sharp_profile: wall_law needs a turbulence model with wall functions "
+                    "(turbulence.model: k_epsilon)");
+            return SharpProfile::wall_law;
+        case P::automatic:
+            break;
+    }
+    if (!settings.wall_profile) return SharpProfile::quadratic;
+    return settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost ? SharpProfile::linear : SharpProfile::wall_law;
+}
+
+}  // namespace
+
 ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySettings& settings,
                                    std::vector<Body>& bodies)
     : grid_(grid),
@@ -17,24 +43,8 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
     if (settings.ibm.interface == Interface::sharp) {
-        using P = IbmConfig::SharpProfileChoice;
-        const P choice = settings.ibm.sharp_profile;
-        // The law of the wall has no value inside a body: ghost faces take the linear profile with a wall model.
-        const bool ghost = settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost;
-        SharpProfile profile = !settings.wall_profile ? SharpProfile::quadratic
-                               : ghost                ? SharpProfile::linear
-                                                      : SharpProfile::wall_law;
-        if (choice == P::linear) profile = SharpProfile::linear;
-        if (choice == P::quadratic) profile = SharpProfile::quadratic;
-        if (choice == P::wall_law) {
-            if (!settings.wall_profile)
-                throw std::invalid_argument(
-                    "numerics.ibm.sharp_profile: wall_law needs a turbulence model with wall functions "
-                    "(turbulence.model: k_epsilon)");
-            profile = SharpProfile::wall_law;
-        }
-        auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance, profile,
-                                                    settings.wall_profile);
+        auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
+                                                    sharp_profile(settings), settings.wall_profile);
         sharp_ = sharp.get();
         forcing_ = std::move(sharp);
     } else
@@ -98,9 +108,9 @@ std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Fie
             r.forcing = rho * depth * (-f.momentum_rate + body.area() * body.state().acceleration);
             r.forcing_torque = rho * depth * (-f.torque_rate + body.polar_moment() * body.state().angular_acceleration);
         }
-        const bool after_projection = settings_.ibm.interface == Interface::sharp;
-        r.max_slip = after_projection ? forcing_->forcing()[b].max_slip : f.max_slip;
-        r.rms_slip = after_projection ? forcing_->forcing()[b].rms_slip : f.rms_slip;
+        // The sharp interface measures its slip after the projection (measure_slip), the diffuse one in its iteration.
+        r.max_slip = sharp_ ? forcing_->forcing()[b].max_slip : f.max_slip;
+        r.rms_slip = sharp_ ? forcing_->forcing()[b].rms_slip : f.rms_slip;
         r.surface = stress_[b]->compute(vel, p, rho, settings_.viscosity, depth, turbulence);
     }
     return out;

@@ -88,9 +88,7 @@ void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
     const Axis& ay = grid_.y_axis();
     const LocalAxis& lx = grid_.lx();
     const LocalAxis& ly = grid_.ly();
-    auto distance = [&](const Vec2& X) {
-        return body.outline().signed_distance(rotated(X - body.state().centre, -body.state().angle));
-    };
+    auto distance = [&](const Vec2& X) { return body.outline().signed_distance(body.to_body(X)); };
     for (int gj = gj0; gj <= gj1; ++gj)
         for (int gi = gi0; gi <= gi1; ++gi) {
             const Vec2 x(ax.centre(gi), ay.centre(gj));

@@ -60,7 +60,6 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
         const double h = cell_size_[b];
-        auto local = [&](const Vec2& p) { return rotated(p - body.state().centre, -body.state().angle); };
         int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
         if (outline.closed()) {
             // Owned faces within the body's reach and two cells.
@@ -74,7 +73,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
                 const Vec2 p = position(i, j);
-                const double phi = outline.signed_distance(local(p));
+                const double phi = outline.signed_distance(body.to_body(p));
                 // A forcing face is at most one face spacing from the surface (sqrt 2 of a cell at a corner).
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
@@ -83,9 +82,10 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 bool across = false;
                 const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
                                             position(i, j + 1)};
-                for (const Vec2& q : neighbours) across = across || (outline.signed_distance(local(q)) < 0.0) != inside;
+                for (const Vec2& q : neighbours)
+                    across = across || (outline.signed_distance(body.to_body(q)) < 0.0) != inside;
                 if (!inside && !across) continue;
-                const SurfacePoint s = outline.nearest(local(p));
+                const SurfacePoint s = outline.nearest(body.to_body(p));
                 candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, body.to_world(s.position),
                                       body.direction_to_world(s.normal), ghost_ ? across : !inside});
             }
@@ -97,8 +97,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         auto [it, fresh] = chosen.try_emplace(key, faces.size());
         if (fresh)
             faces.push_back(f);
-        else if (ForcedFace& kept = faces[it->second];
-                 (f.phi < 0.0) != (kept.phi < 0.0) ? f.phi < 0.0 : f.phi < kept.phi)
+        else if (ForcedFace& kept = faces[it->second]; f.phi < kept.phi)  // inside first, then the nearest
             kept = f;
     }
     out.solid.clear();
@@ -167,7 +166,6 @@ void SharpForcing::find_covered_cells() {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
         const double h = cell_size_[b];
-        auto local = [&](const Vec2& p) { return rotated(p - body.state().centre, -body.state().angle); };
         int i0 = 0, i1 = nx - 1, j0 = 0, j1 = ny - 1;
         if (outline.closed()) {
             const Vec2 c = body.state().centre;
@@ -181,13 +179,13 @@ void SharpForcing::find_covered_cells() {
             for (int i = i0; i <= i1; ++i) {
                 char& done = seen[static_cast<std::size_t>(j) * nx + i];
                 const Vec2 centre(X.c(i), Y.c(j));
-                const double phi = outline.signed_distance(local(centre));
+                const double phi = outline.signed_distance(body.to_body(centre));
                 const double size = std::max(X.w(i), Y.w(j));
                 if (done || phi > 1.5 * size || phi < -3.0 * size) continue;
                 if (!(forced(true, i, j) && forced(true, i + 1, j) && forced(false, i, j) && forced(false, i, j + 1)))
                     continue;
                 done = 1;
-                const SurfacePoint s = outline.nearest(local(centre));
+                const SurfacePoint s = outline.nearest(body.to_body(centre));
                 const Vec2 n = body.direction_to_world(s.normal);
                 const Vec2 at = body.to_world(s.position);
                 const Vec2 hs = local_spacing(grid_, at);
@@ -263,9 +261,16 @@ void SharpForcing::reconstruct(Component& c, bool is_u, Field2D& field, const Fi
     }
 }
 
+bool SharpForcing::any_moves() const {
+    return std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
+}
+
+void SharpForcing::begin_step() {
+    if (!placed_ || any_moves()) classify();
+}
+
 void SharpForcing::apply(Velocity& star, double dt) {
-    const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
-    if (!placed_ || any_moves) classify();
+    if (!placed_ || any_moves()) classify();
     std::vector<double> sums(3 * bodies_.size(), 0.0);  // momentum rate x, y and torque rate per body
     auto account = [&](const ForcedFace& f, bool is_u, double change) {
         const double rate = change * f.volume / dt;

@@ -66,9 +66,9 @@ public:
     SharpForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies, double image_cells,
                  SharpProfile profile, WallProfile wall_profile = {});
 
-    // Where the bodies are at the start of the step: the forced faces, and the pressure extended into the cells
-    // whose four faces are all forced (extend_pressure). Collective.
-    void begin_step() override { classify(); }
+    // Where the bodies are at the start of the step (a free body's update moved it since apply()): the forced faces
+    // and the covered cells of extend_pressure(). Static bodies are classified once. Collective.
+    void begin_step() override;
     void apply(Velocity& star, double dt) override;
     const std::vector<BodyForcing>& forcing() const override { return result_; }
     void measure_slip(const Velocity& vel) override;
@@ -112,6 +112,7 @@ private:
         std::vector<Stencil> images2;       // the second image points (quadratic profile), in the same order
         std::vector<Stencil> images_other;  // the other component at the image points (wall-law profile)
     };
+    bool any_moves() const;
     void classify();
     void find_covered_cells();
     bool inside_any(const Vec2& X) const;

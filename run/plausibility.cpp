@@ -169,9 +169,9 @@ void check_interface(const CaseConfig& c, std::vector<std::string>& out) {
         return b.carrier == CarrierKind::immersed && b.motion.type != MotionType::fixed;
     });
     if (c.turbulence.model != TurbulenceModelType::laminar)
-        out.push_back("numerics.ibm.interface: sharp with turbulence.model " + std::string("k_epsilon") +
-                      " is not validated: a square sheds too weakly (the Lyn square's C_D 0.9-1.3 against 2.04 "
-                      "body-fitted; docs/limitations.md); use the diffuse interface");
+        out.push_back(
+            "numerics.ibm.interface: sharp with turbulence.model k_epsilon is not validated: a square sheds too weakly "
+            "(the Lyn square's C_D 0.9-1.3 against 2.04 body-fitted; docs/limitations.md); use the diffuse interface");
     if (moving)
         out.push_back(
             "numerics.ibm.interface: sharp on a moving body is not validated: its force ripples by 3.7-6.9 % as "

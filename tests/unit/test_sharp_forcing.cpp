@@ -152,7 +152,7 @@ TEST(SharpForcing, PressureExtendsIntoCoveredCellsFromTheFluidAlone) {
             if (extended(i, j) == p(i, j)) continue;
             ++changed;
             const Vec2 X(grid.lx().c(i), grid.ly().c(j));
-            const SurfacePoint s = body.outline().nearest(rotated(X - body.state().centre, -body.state().angle));
+            const SurfacePoint s = body.outline().nearest(body.to_body(X));
             const Vec2 n = body.direction_to_world(s.normal);
             const Vec2 image = body.to_world(s.position) + 2.5 * h * std::hypot(n.x(), n.y()) * n;
             largest = std::max(largest, std::abs(extended(i, j) - G.dot(image)));
