@@ -80,6 +80,10 @@ public:
     virtual void locate_walls() = 0;
     virtual const Field2D& fluid_cells() const = 0;  // 1 in fluid cells, 0 inside a body; ghosts included
     virtual std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const = 0;
+    // True when each surface lies between fluid and solid cells with the fluid cells' own equations up to it (a
+    // sharp interface with ghost faces): the wall law then acts through the corners between fluid and solid cells,
+    // as on a body-fitted hole's sides; false: through a band of cells around a diffuse surface (immersed_wall.hpp).
+    virtual bool walls_between_cells() const { return false; }
 
     // The cells the bodies take out of the fluid (a body-fitted hole, core/grid/solid_cells.hpp); null when the
     // bodies are forced on the whole grid (the immersed boundary). The flow solver is handed it once.

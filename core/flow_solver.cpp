@@ -92,6 +92,17 @@ void FlowSolver::fill_boundaries(Velocity& vel) const {
     bc_->apply(vel);
 }
 
+void FlowSolver::set_pressure_cells(const Field2D* fluid) {
+    if (solid_ && fluid) throw std::logic_error("FlowSolver: pressure cells and solid cells together");
+    pressure_cells_ = fluid;
+    long long count = 0;
+    if (fluid)
+        for (int j = 0; j < grid_->ny(); ++j)
+            for (int i = 0; i < grid_->nx(); ++i) count += (*fluid)(i, j) != 0.0;
+    MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, grid_->comm());
+    poisson_->set_fluid_cells(fluid, fluid ? count : grid_->global_cells());
+}
+
 void FlowSolver::set_solid_cells(const SolidCells* solid) {
     solid_ = solid;
     if (implicit_) implicit_->set_solid_cells(solid_);
@@ -139,7 +150,7 @@ void for_each_block_face(const Grid& grid, const SolidBlock& b, OnU&& on_u, OnV&
 // implicit solve left it (its hole faces filled as the solve's rows assumed), for solid_momentum_rate.
 void FlowSolver::implicit_wall_momentum(Velocity& star) {
     implicit_wall_.assign(solid_ ? solid_->blocks().size() : 0, {0.0, 0.0});
-    if (!fluid_cells()) return;
+    if (!solid_ || solid_->empty()) return;
     halo_->exchange(star);
     fill_boundaries(star);
     for (std::size_t k = 0; k < implicit_wall_.size(); ++k) {
@@ -598,7 +609,7 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
     StageTimer::Scope timed(timer_, "correction");
     halo_->exchange(phi_);
     bc_->apply_pressure(phi_);
-    subtract_pressure_gradient(*grid_, *bc_, phi_, dt, star_);
+    subtract_pressure_gradient(*grid_, *bc_, phi_, dt, star_, pressure_cells_);
     for (int j = 0; j < grid_->ny(); ++j)
         for (int i = 0; i < grid_->nx(); ++i) p_(i, j) += phi_(i, j);
     halo_->exchange(p_);

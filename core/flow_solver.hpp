@@ -107,7 +107,15 @@ public:
     // set_solid_cells() does to the start, so that an impulsive start is divergence-free before the first step.
     void project_start();
     const SolidCells* solid_cells() const { return solid_; }
-    const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : nullptr; }
+    // Cells inside sharp immersed surfaces (ibm/sharp_forcing.hpp, ghost faces), left out of the pressure problem:
+    // no flux of the pressure increment crosses the faces between them and the fluid (Neumann, as on a hole's
+    // sides), so the projection leaves those faces as the carrier set them and the fluid cells beside a surface
+    // are divergence-free with the surface's own normal velocity. The carrier sets their faces (it forces them);
+    // `fluid` is 1 in fluid cells, 0 inside (ghosts included) and must outlive the solver or the next call: call
+    // again after it changed (a moving body). Null: none. Not with solid cells. Collective.
+    void set_pressure_cells(const Field2D* fluid);
+    // 1 in the cells that hold flow, 0 in the others (a hole's, or those set_pressure_cells() left out); null: all.
+    const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : pressure_cells_; }
     // The momentum the last step's fluxes carried into a solid block, per unit time, density and depth (m^3/s^2:
     // the force on it / (rho depth)): the sum over the block's faces of V (H_step - grad p^{n+1/2}), H_step the
     // step's Adams-Bashforth combination of convection and diffusion. The operators are conservative, so the
@@ -221,6 +229,7 @@ private:
     long step_ = 0;
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
+    const Field2D* pressure_cells_ = nullptr;     // set_pressure_cells()
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
     GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                        // and their velocities on this patch

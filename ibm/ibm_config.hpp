@@ -17,16 +17,15 @@ struct IbmConfig {
     // Which faces the sharp interface reconstructs: the fluid faces beside the surface (forcing, Fadlun et al. 2000)
     // or the faces inside it beside the fluid (ghost, Tseng & Ferziger 2003), the fluid faces then free.
     enum class SharpFaces { forcing, ghost } sharp_faces = SharpFaces::forcing;
-    // The sharp interface's profile beside the surface (sharp_forcing.hpp): automatic (quadratic in laminar runs,
-    // the law of the wall with a wall-function model), or one of them.
+    // The sharp interface's profile beside the surface (sharp_forcing.hpp): automatic (quadratic in laminar runs;
+    // with a wall-function model the law of the wall on forcing faces, the mirror on ghost faces), or one of them.
     enum class SharpProfileChoice {
         automatic,
         linear,
         quadratic,
-        wall_law
+        wall_law,
+        mirror
     } sharp_profile = SharpProfileChoice::automatic;
-    bool sharp_continuity =
-        true;  // EXPERIMENT  // reconstructions per forcing of the sharp interface (sharp_forcing.hpp)
     DeltaKernel kernel = DeltaKernel::roma3_smoothed;  // Yang et al. 2009: no cell-crossing ripple
     int forcing_iterations = 10;                       // multi-direct forcing (Breugem 2012)
     int projection_passes = 1;                         // forcing and projection per step (run/step.cpp)

@@ -37,12 +37,15 @@ std::vector<CaseKey> ibm_keys() {
         {.path = "numerics.ibm.sharp_profile",
          .type = K::choice,
          .default_value = "auto",
-         .choices = {"auto", "linear", "quadratic", "wall_law"},
+         .choices = {"auto", "linear", "quadratic", "wall_law", "mirror"},
          .meaning =
              "Sharp interface: the velocity profile between the surface and the image points that sets the faces "
              "beside it. `auto`: `quadratic` in laminar runs (through the wall, 2 and 3 cells out: DFG 2D-1's "
-             "drag in the band at D/h 40), `wall_law` with k-epsilon (the model's law of the wall from the "
-             "image point down); `linear`: straight from the wall to turbulence.image_distance cells out."},
+             "drag in the band at D/h 40); with k-epsilon `wall_law` on forcing faces (the model's law of the wall "
+             "from the image point down) and `mirror` on ghost faces; `linear`: straight from the wall to "
+             "turbulence.image_distance cells out; `mirror` (ghost faces only): straight through the wall from the "
+             "face's mirror image, so that the wall's flux is that of a body-fitted wall (with k-epsilon, the wall "
+             "law's shear through the corners beside the surface)."},
         {.path = "numerics.ibm.kernel",
          .type = K::choice,
          .default_value = "roma3_smoothed",
@@ -127,9 +130,11 @@ IbmConfig read_ibm(const CaseReader& r) {
         "numerics.ibm.sharp_faces",
         {{"forcing", IbmConfig::SharpFaces::forcing}, {"ghost", IbmConfig::SharpFaces::ghost}});
     using P = IbmConfig::SharpProfileChoice;
-    m.sharp_profile = r.choice<P>(
-        "numerics.ibm.sharp_profile",
-        {{"auto", P::automatic}, {"linear", P::linear}, {"quadratic", P::quadratic}, {"wall_law", P::wall_law}});
+    m.sharp_profile = r.choice<P>("numerics.ibm.sharp_profile", {{"auto", P::automatic},
+                                                                 {"linear", P::linear},
+                                                                 {"quadratic", P::quadratic},
+                                                                 {"wall_law", P::wall_law},
+                                                                 {"mirror", P::mirror}});
     m.kernel = r.choice<DeltaKernel>("numerics.ibm.kernel", {{"roma3", DeltaKernel::roma3},
                                                              {"peskin4", DeltaKernel::peskin4},
                                                              {"roma3_smoothed", DeltaKernel::roma3_smoothed}});

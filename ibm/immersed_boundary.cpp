@@ -9,8 +9,9 @@ namespace chute {
 
 namespace {
 
-// The sharp interface's profile (numerics.ibm.sharp_profile). Automatic: quadratic in laminar runs, the law of the
-// wall with a wall-function model, and with ghost faces the linear profile (the law of the wall has no value inside).
+// The sharp interface's profile (numerics.ibm.sharp_profile). Automatic: quadratic in laminar runs; with a
+// wall-function model the law of the wall on forcing faces, and on ghost faces the mirror (the law of the wall has no
+// value inside; the wall law then acts through the eddy viscosity beside the surface, ImmersedWall).
 SharpProfile sharp_profile(const ImmersedBoundarySettings& settings) {
     using P = IbmConfig::SharpProfileChoice;
     switch (settings.ibm.sharp_profile) {
@@ -24,11 +25,17 @@ SharpProfile sharp_profile(const ImmersedBoundarySettings& settings) {
                     "numerics.ibm.sharp_profile: wall_law needs a turbulence model with wall functions "
                     "(turbulence.model: k_epsilon)");
             return SharpProfile::wall_law;
+        case P::mirror:
+            if (settings.ibm.sharp_faces != IbmConfig::SharpFaces::ghost)
+                throw std::invalid_argument(
+                    "numerics.ibm.sharp_profile: mirror sets the faces inside the body from their mirror images; it "
+                    "needs numerics.ibm.sharp_faces: ghost");
+            return SharpProfile::mirror;
         case P::automatic:
             break;
     }
     if (!settings.wall_profile) return SharpProfile::quadratic;
-    return settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost ? SharpProfile::linear : SharpProfile::wall_law;
+    return settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost ? SharpProfile::mirror : SharpProfile::wall_law;
 }
 
 }  // namespace
@@ -38,7 +45,10 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
     : grid_(grid),
       settings_(settings),
       bodies_(bodies),
-      walls_(grid, bodies, settings.image_distance),
+      walls_(grid, bodies, settings.image_distance,
+             settings.ibm.interface == Interface::sharp && settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost
+                 ? NearWall::surface
+                 : NearWall::band),
       start_momentum_(bodies.size()),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
@@ -56,6 +66,14 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 void ImmersedBoundary::begin_step(const Velocity& start) {
     for (BodyForcing& f : step_forcing_) f = BodyForcing{};
     forcing_->begin_step();
+    if (walls_.near_wall() == NearWall::surface && flow_ && !bodies_.empty()) {
+        // Ghost faces: the cells inside the bodies leave the pressure problem (FlowSolver::set_pressure_cells).
+        walls_.locate();
+        if (walls_.fluid_version() != pressure_cells_version_) {
+            flow_->set_pressure_cells(&walls_.fluid());
+            pressure_cells_version_ = walls_.fluid_version();
+        }
+    }
     if (sharp_ && flow_ && !bodies_.empty()) {
         sharp_->extend_pressure(flow_->pressure());
         flow_->refresh_ghosts();

@@ -61,6 +61,7 @@ public:
     std::vector<WallSample> sample_walls(const Velocity& vel, const Field2D& k) const override {
         return walls_.sample(vel, k);
     }
+    bool walls_between_cells() const override { return walls_.near_wall() == NearWall::surface; }
 
     void attach(FlowSolver& flow) override { flow_ = &flow; }
 
@@ -76,6 +77,7 @@ private:
     FlowSolver* flow_ = nullptr;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
     ImmersedWall walls_;
+    long pressure_cells_version_ = -1;  // the walls_.fluid_version() the flow's pressure cells were set from
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body

@@ -17,8 +17,12 @@ int cell_containing(const Axis& a, double x) {
 
 }  // namespace
 
-ImmersedWall::ImmersedWall(const Grid& grid, const std::vector<Body>& bodies, double image_cells)
-    : grid_(grid), bodies_(bodies), image_cells_(image_cells), fluid_(grid, 1.0) {}
+ImmersedWall::ImmersedWall(const Grid& grid, const std::vector<Body>& bodies, double image_cells, NearWall near_wall)
+    : grid_(grid), bodies_(bodies), image_cells_(image_cells), near_wall_(near_wall), fluid_(grid, 1.0) {}
+
+double ImmersedWall::sample_distance(const BandCell& c) const {
+    return near_wall_ == NearWall::surface ? std::max(c.d, 0.5 * c.h) : image_cells_ * c.h;
+}
 
 double ImmersedWall::cell_size(int gi, int gj) const {
     return std::max(grid_.x_axis().width(gi), grid_.y_axis().width(gj));
@@ -31,6 +35,7 @@ void ImmersedWall::locate() {
     if (located_ && !any_moves) return;
     located_ = true;
 
+    const std::vector<double> before = fluid_.raw();
     const int margin = static_cast<int>(std::ceil(image_cells_)) + 3;
     // Static bodies are scanned once (a plane bounds half the domain: all of it is scanned).
     if (!static_scanned_) {
@@ -46,6 +51,7 @@ void ImmersedWall::locate() {
     band_ = static_band_;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (bodies_[b].moves()) scan_around(b, margin);
+    if (fluid_.raw() != before) ++fluid_version_;
     // A cell near one body may lie inside another (the block resting on the bed): the nearest surface and
     // the sign of the smallest distance decide.
     std::unordered_map<long long, std::size_t> seen;
@@ -58,11 +64,14 @@ void ImmersedWall::locate() {
         else if (c.d < merged[it->second].d)
             merged[it->second] = c;
     }
-    std::erase_if(merged, [](const BandCell& c) { return c.d <= -2.0 * c.h; });
+    if (near_wall_ == NearWall::surface)
+        std::erase_if(merged, [](const BandCell& c) { return c.d < 0.0 || c.d >= c.h; });
+    else
+        std::erase_if(merged, [](const BandCell& c) { return c.d <= -2.0 * c.h; });
     band_ = std::move(merged);
     std::vector<Vec2> images;
     images.reserve(band_.size());
-    for (const BandCell& c : band_) images.push_back(c.surface + image_cells_ * c.h * c.normal);
+    for (const BandCell& c : band_) images.push_back(c.surface + sample_distance(c) * c.normal);
     su_ = bilinear_stencils(grid_, Staggering::u_face, images);
     sv_ = bilinear_stencils(grid_, Staggering::v_face, images);
     sk_ = bilinear_stencils(grid_, Staggering::cell, images);
@@ -97,7 +106,7 @@ void ImmersedWall::scan(std::size_t b, int gi0, int gi1, int gj0, int gj1) {
             const int li = gi - lx.offset, lj = gj - ly.offset;
             if (d < 0.0 && li >= -kGhost && li < grid_.nx() + kGhost && lj >= -kGhost && lj < grid_.ny() + kGhost)
                 fluid_(li, lj) = 0.0;
-            if (d <= -2.0 * h || d >= image_cells_ * h) continue;
+            if (d <= -2.0 * h || d >= std::max(image_cells_, 1.0) * h) continue;
             // Outward normal: the gradient of the signed distance (central differences).
             const double e = 1e-4 * h;
             Vec2 n(distance(x + Vec2(e, 0)) - distance(x - Vec2(e, 0)),
@@ -121,7 +130,7 @@ std::vector<WallSample> ImmersedWall::sample(const Velocity& vel, const Field2D&
         if (i < 0 || i >= grid_.nx() || j < 0 || j >= grid_.ny()) continue;
         const Vec2 slip = u[m] - bodies_[c.body].velocity_at(c.surface);
         const double speed = std::abs(slip.dot(perp(c.normal)));
-        out.push_back({i, j, c.d, c.h, image_cells_ * c.h, speed, k_image[m], c.d >= 0.0 && c.d < c.h});
+        out.push_back({i, j, c.d, c.h, sample_distance(c), speed, k_image[m], c.d >= 0.0 && c.d < c.h});
     }
     return out;
 }

@@ -42,6 +42,8 @@ SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std:
     for (const Body& body : bodies_) cell_size_.push_back(min_spacing_along(grid_, body));
     if (profile_ == SharpProfile::wall_law && !wall_profile_)
         throw std::invalid_argument("SharpForcing: the wall-law profile needs the law (wall_profile)");
+    if (profile_ == SharpProfile::mirror && !ghost_)
+        throw std::invalid_argument("SharpForcing: the mirror profile sets ghost faces (numerics.ibm.sharp_faces)");
 }
 
 void SharpForcing::classify_component(bool is_u, Component& out) const {
@@ -60,6 +62,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
         const double h = cell_size_[b];
+        const double surface = on_surface(b);
         int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
         if (outline.closed()) {
             // Owned faces within the body's reach and two cells.
@@ -77,13 +80,13 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 // A forcing face is at most one face spacing from the surface (sqrt 2 of a cell at a corner).
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
-                const bool inside = phi < 0.0;
+                const bool inside = phi < surface;
                 if (ghost_ && !inside) continue;  // ghost cells: only inside faces; forcing: inside and outside
                 bool across = false;
                 const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
                                             position(i, j + 1)};
                 for (const Vec2& q : neighbours)
-                    across = across || (outline.signed_distance(body.to_body(q)) < 0.0) != inside;
+                    across = across || (outline.signed_distance(body.to_body(q)) < surface) != inside;
                 if (!inside && !across) continue;
                 const SurfacePoint s = outline.nearest(body.to_body(p));
                 candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, body.to_world(s.position),
@@ -112,7 +115,8 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         const Vec2 n = f.normal;
         const Vec2 h = local_spacing(grid_, f.surface);
         const double hn = std::hypot(n.x() * h.x(), n.y() * h.y());
-        const double L = std::max(image_cells_ * hn, f.phi / 0.75);
+        const double L = profile_ == SharpProfile::mirror ? std::max(std::abs(f.phi), 0.5 * hn)
+                                                          : std::max(image_cells_ * hn, f.phi / 0.75);
         f.image_distance = L;
         mine.push_back(f.surface + L * n);
         if (profile_ != SharpProfile::quadratic) {
@@ -141,8 +145,14 @@ void SharpForcing::classify() {
     placed_ = true;
 }
 
+double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? 1e-9 * cell_size_[b] : 0.0; }
+
 bool SharpForcing::inside_any(const Vec2& X) const {
-    return std::any_of(bodies_.begin(), bodies_.end(), [&](const Body& b) { return b.contains(X); });
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        if (ghost_ ? body.outline().signed_distance(body.to_body(X)) < on_surface(b) : body.contains(X)) return true;
+    }
+    return false;
 }
 
 bool SharpForcing::forced(bool is_u, int i, int j) const {

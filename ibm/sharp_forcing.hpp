@@ -22,21 +22,31 @@
 //                    quadratic  through U_b at 0, u at L and at L + h (laminar runs): the linear profile's
 //                               error at the face, b phi (L - phi) for u = a y + b y^2, is O(h^2) and makes the
 //                               wall shear first order (DFG 2D-1's viscous drag: docs/validation.md); the
-//                               quadratic is exact for that profile, which leaves O(h^3) at the face.
+//                               quadratic is exact for that profile, which leaves O(h^3) at the face;
+//                    mirror     (ghost faces) linear through the wall from the face's mirror image, L = |phi| (at
+//                               least half a cell): u* = 2 U_b - u(X_s + |phi| n), Tseng & Ferziger's image. Where
+//                               the surface lies on grid lines the image is the first fluid face, u* its reflection,
+//                               and the flux across the wall is that of a body-fitted wall; with a wall-function model
+//                               the eddy viscosity on the corners between the two (turbulence/k_epsilon.cpp) makes it
+//                               the wall law's shear, as on a body-fitted hole's sides.
 //                  Image stencils that read other forcing faces are resolved by repeating the reconstruction
 //                  (numerics.ibm.sharp_sweeps times).
 //   fluid faces    untouched.
 // With numerics.ibm.sharp_faces: ghost (Tseng & Ferziger 2003, JCP 192:593) the profile sets the faces inside the body
-// that have a neighbour outside instead (phi < 0: the profile carried through the wall; the linear one with a
+// that have a neighbour outside instead (phi < 0: the profile carried through the wall; the mirror with a
 // wall-function model, the law of the wall having no value there), and every fluid face keeps its own momentum
 // equation: the flow beside the wall may then reverse under a separated layer, which a profile from the wall to an
-// image point cannot give the forcing faces (docs/validation.md, "Sharp interface").
+// image point cannot give the forcing faces (docs/validation.md, "Sharp interface"). A face on the surface (|phi|
+// below 1e-9 of a cell: a wall on a grid line) counts as inside, so that it takes the body's velocity as a
+// body-fitted wall's face does.
 // A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
-// The pressure is solved on the whole grid (the fast solvers stay); the projection then moves the forced faces by
-// dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U at the front corners
-// of a square moving across the grid: the moving surface's geometric conservation, docs/validation.md).
-// A face that leaves a moving body is next to the surface in that step (a body moves less than a cell per step),
-// so it is a forcing face and gets the reconstructed value: no face enters the fluid with a solid's history.
+// The pressure: with forcing faces it is solved on the whole grid (the fast solvers stay); the projection then moves
+// the forced faces by dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U
+// at the front corners of a square moving across the grid). With ghost faces the cells inside the bodies leave the
+// pressure problem (ImmersedBoundary, FlowSolver::set_pressure_cells): the mirrored ghost values leave a divergence
+// in the first cells inside, which a whole-grid projection pushes through the wall (26 % of U on the Lyn square).
+// A face that leaves a moving body is next to the surface in that step (a body moves less than a cell per step), so
+// with forcing faces it gets the reconstructed value: no face enters the fluid with a solid's history.
 // Momentum given to the fluid per unit density, depth and time, for the force measure (a):
 //   sum over the forced faces of V (u_forced - u*) / dt,   and its moment about the body's centre.
 #include <functional>
@@ -56,7 +66,7 @@ std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std
                                        std::size_t& first);
 
 // The profile between the surface and the flow beside it (above).
-enum class SharpProfile { linear, quadratic, wall_law };
+enum class SharpProfile { linear, quadratic, wall_law, mirror };
 // The law of the wall (turbulence/): the tangential speed at distance y from a wall, given the speed at distance L.
 using WallProfile = std::function<double(double speed, double L, double y)>;
 
@@ -115,6 +125,7 @@ private:
     bool any_moves() const;
     void classify();
     void find_covered_cells();
+    double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
     bool inside_any(const Vec2& X) const;
     bool forced(bool is_u, int i, int j) const;  // by geometry: inside, or beside a face inside
     void classify_component(bool is_u, Component& out) const;

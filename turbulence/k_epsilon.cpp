@@ -45,7 +45,7 @@ KEpsilon::KEpsilon(const KEpsilonSettings& settings, FlowSolver& flow, Carrier& 
     // Floors far below any physical level: they only keep eps / k and C_mu k^2 / eps defined.
     k_floor_ = 1e-10 * k_in_;
     eps_floor_ = 1e-10 * eps_in_;
-    k_ = eps_ = model_nu_t_ = P_ = tk_ = te_ = Field2D(grid_);
+    k_ = eps_ = model_nu_t_ = P_ = tk_ = te_ = wall_nu_ = Field2D(grid_);
     was_fluid_ = Field2D(grid_, 1.0);
     // A body-fitted grid's topology changes (band/layers.hpp) carry them along with the flow's fields.
     for (Field2D* f : {&k_, &eps_, &model_nu_t_, &was_fluid_}) flow_.remap_with_grid(f);
@@ -71,6 +71,7 @@ void KEpsilon::shifted() {
     carrier_.locate_walls();
     set_ghosts(k_, &k_in_);
     set_ghosts(eps_, &eps_in_);
+    sample_walls();  // where the near-wall cells are now (the next update samples again)
     refresh_eddy_viscosity(true);
 }
 
@@ -83,8 +84,8 @@ void KEpsilon::sample_walls() {
     near_wall_.clear();
     for (const WallSample& s : carrier_.sample_walls(flow_.velocity(), k_)) {
         const WallFunction wf(s.k, s.image_distance, nu);
-        near_wall_.push_back(
-            {s.i, s.j, s.distance, s.size, wf.nu_wall, wf.shear(s.slip_speed, s.image_distance, nu), s.wall_function});
+        near_wall_.push_back({s.i, s.j, s.distance, s.size, s.image_distance, wf.nu_wall,
+                              wf.shear(s.slip_speed, s.image_distance, nu), s.wall_function});
     }
 }
 
@@ -300,7 +301,8 @@ void KEpsilon::refresh_eddy_viscosity(bool cells_kept) {
     // Beside an immersed surface the near-wall band takes at least the wall's eddy viscosity; a body-fitted
     // hole's sides are walls like the domain's (their corners below).
     const SolidCells* holes = flow_.solid_cells();
-    if (!holes && !cells_kept)
+    const bool between_cells = carrier_.walls_between_cells();
+    if (!holes && !cells_kept && !between_cells)
         for (const NearWallCell& c : near_wall_) e.cell(c.i, c.j) = std::max(e.cell(c.i, c.j), c.nu_wall);
     set_ghosts(e.cell, nullptr);  // zero gradient across every domain side
     for (int j = 0; j <= ny; ++j)
@@ -327,6 +329,7 @@ void KEpsilon::refresh_eddy_viscosity(bool cells_kept) {
         }
     }
     if (holes) set_hole_corners(*holes);
+    if (between_cells) set_surface_corners();
     double mx = 0.0;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) mx = std::max(mx, e.cell(i, j));
@@ -363,6 +366,30 @@ void KEpsilon::set_hole_corners(const SolidCells& holes) {
             for (int gj = h.lower[1] + end_y; gj <= h.upper[1] - end_y; ++gj) set(gi, gj, {col, gj - 1}, {col, gj}, y);
         }
     }
+}
+
+// A sharp surface between fluid and solid cells (Carrier::walls_between_cells): every corner with a solid cell and a
+// wall-function cell among its four carries the wall eddy viscosity of those wall-function cells (their k now, at
+// the distance the carrier sampled them), so that (nu + nu_w) times the ghost faces' mirrored gradient across the
+// surface is the log-law shear, as on a body-fitted hole's sides (set_hole_corners).
+void KEpsilon::set_surface_corners() {
+    EddyViscosity& e = flow_.eddy_viscosity();
+    const Field2D& fluid = carrier_.fluid_cells();
+    const double nu = settings_.viscosity;
+    wall_nu_.fill(-1.0);
+    for (const NearWallCell& c : near_wall_)
+        if (c.wall_function) wall_nu_(c.i, c.j) = WallFunction(k_(c.i, c.j), c.y, nu).nu_wall;
+    halo_.exchange(wall_nu_);
+    for (int j = 0; j <= grid_.ny(); ++j)
+        for (int i = 0; i <= grid_.nx(); ++i) {
+            bool solid = false;
+            double sum = 0.0, n = 0.0;
+            for (auto [a, b] : {std::pair{i - 1, j - 1}, {i, j - 1}, {i - 1, j}, {i, j}}) {
+                solid = solid || fluid(a, b) == 0.0;
+                if (wall_nu_(a, b) >= 0.0) sum += wall_nu_(a, b), n += 1.0;
+            }
+            if (solid && n > 0.0) e.corner(i, j) = sum / n;
+        }
 }
 
 std::optional<std::string> KEpsilon::check() const {

@@ -75,12 +75,14 @@ private:
         int i, j;            // local indices (owned cell)
         double distance;     // of the cell centre from the surface (m); negative inside the body
         double size;         // h (m)
+        double y;            // distance from the surface of the point the carrier sampled (m)
         double nu_wall;      // m^2/s
         double tau_wall;     // kinematic wall shear, m^2/s^2
         bool wall_function;  // 0 <= d < h: epsilon and the production of k come from the wall function
     };
     void sample_walls();
     void set_hole_corners(const SolidCells& holes);
+    void set_surface_corners();
     struct WallCell {
         int i, j;
         double y;           // distance the log law is applied at
@@ -101,7 +103,7 @@ private:
     const Grid& grid_;
     Carrier& carrier_;
     mutable HaloExchange halo_;
-    Field2D k_, eps_, model_nu_t_, P_, tk_, te_, was_fluid_;
+    Field2D k_, eps_, model_nu_t_, P_, tk_, te_, was_fluid_, wall_nu_;
     std::vector<NearWallCell> near_wall_;
     double k_in_ = 0.0, eps_in_ = 0.0, k_floor_ = 0.0, eps_floor_ = 0.0;
     int last_substeps_ = 1;

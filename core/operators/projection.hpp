@@ -17,9 +17,10 @@ inline double cell_divergence(const Grid& grid, const Velocity& vel, int i, int 
 
 // out(i, j) = scale * div(vel) on the owned cells.
 void divergence(const Grid& grid, const Velocity& vel, double scale, Field2D& out);
-// vel -= dt grad(p) on the advanced faces and on boundary faces with a pressure (Dirichlet) condition.
+// vel -= dt grad(p) on the advanced faces and on boundary faces with a pressure (Dirichlet) condition; with
+// `fluid` (1 in the cells of the pressure problem, ghosts included), only on faces between two of its cells.
 // p must have valid ghosts.
 void subtract_pressure_gradient(const Grid& grid, const BoundaryConditions& bc, const Field2D& p, double dt,
-                                Velocity& vel);
+                                Velocity& vel, const Field2D* fluid = nullptr);
 
 }  // namespace chute
