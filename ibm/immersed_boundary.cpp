@@ -66,14 +66,6 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 void ImmersedBoundary::begin_step(const Velocity& start) {
     for (BodyForcing& f : step_forcing_) f = BodyForcing{};
     forcing_->begin_step();
-    if (walls_.near_wall() == NearWall::surface && flow_ && !bodies_.empty()) {
-        // Ghost faces: the cells inside the bodies leave the pressure problem (FlowSolver::set_pressure_cells).
-        walls_.locate();
-        if (walls_.fluid_version() != pressure_cells_version_) {
-            flow_->set_pressure_cells(&walls_.fluid());
-            pressure_cells_version_ = walls_.fluid_version();
-        }
-    }
     if (sharp_ && flow_ && !bodies_.empty()) {
         sharp_->extend_pressure(flow_->pressure());
         flow_->refresh_ghosts();
@@ -85,6 +77,15 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
 void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
     forcing_->apply(predicted, dt);
+    if (walls_.near_wall() == NearWall::surface && flow_) {
+        // Ghost faces: the cells inside the bodies where they are now leave the pressure problem
+        // (FlowSolver::set_pressure_cells); the matrix is rebuilt when a body moved across a cell centre.
+        walls_.locate();
+        if (walls_.fluid_version() != pressure_cells_version_) {
+            flow_->set_pressure_cells(&walls_.fluid());
+            pressure_cells_version_ = walls_.fluid_version();
+        }
+    }
     // A further pass of the step forces the projected velocity again: the fluid receives the momentum of
     // every pass, and the slip left is the last pass's.
     for (std::size_t b = 0; b < bodies_.size(); ++b) {

@@ -55,6 +55,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
     auto position = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
     auto volume = [&](int i, int j) { return is_u ? X.dc(i) * Y.w(j) : X.w(i) * Y.dc(j); };
+    auto key_of = [&](int i, int j) { return static_cast<long long>(j) * (nx + 2 * kGhost) + i; };
 
     // Every body's candidates, then one entry per face: inside a body first, else the nearest surface.
     std::vector<ForcedFace> candidates;
@@ -81,7 +82,32 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
                 const bool inside = phi < surface;
-                if (ghost_ && !inside) continue;  // ghost cells: only inside faces; forcing: inside and outside
+                // Ghost faces: a face between a cell whose centre is inside and one whose centre is outside bounds
+                // the pressure problem (FlowSolver::set_pressure_cells): it takes the body's velocity, so that the
+                // fluid cells' mass balance sees the body's own flux through the staircase of their faces (a rigid
+                // motion's net flux through it is zero) rather than a mirrored value.
+                if (ghost_) {
+                    const Vec2 c0 = is_u ? Vec2(X.c(i - 1), Y.c(j)) : Vec2(X.c(i), Y.c(j - 1));
+                    const Vec2 c1(X.c(i), Y.c(j));
+                    const bool in0 = outline.signed_distance(body.to_body(c0)) < 0.0;
+                    const bool in1 = outline.signed_distance(body.to_body(c1)) < 0.0;
+                    if (in0 != in1) {
+                        candidates.push_back(
+                            {i, j, static_cast<int>(b), volume(i, j), p, std::min(phi, 0.0), p, Vec2(0.0, 0.0), false});
+                        continue;
+                    }
+                }
+                if (ghost_ && !inside) {  // ghost faces: only inside faces, and those the body left since
+                    if (out.inside.contains(key_of(i, j))) {
+                        const SurfacePoint s = outline.nearest(body.to_body(p));
+                        ForcedFace f{i,   j,   static_cast<int>(b),       volume(i, j),
+                                     p,   phi, body.to_world(s.position), body.direction_to_world(s.normal),
+                                     true};
+                        f.fresh = true;
+                        candidates.push_back(f);
+                    }
+                    continue;
+                }
                 bool across = false;
                 const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
                                             position(i, j + 1)};
@@ -96,7 +122,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     std::unordered_map<long long, std::size_t> chosen;
     std::vector<ForcedFace> faces;
     for (const ForcedFace& f : candidates) {
-        const long long key = static_cast<long long>(f.j) * (nx + 2 * kGhost) + f.i;
+        const long long key = key_of(f.i, f.j);
         auto [it, fresh] = chosen.try_emplace(key, faces.size());
         if (fresh)
             faces.push_back(f);
@@ -105,7 +131,11 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     }
     out.solid.clear();
     out.forcing.clear();
-    for (const ForcedFace& f : faces) (f.reconstructed ? out.forcing : out.solid).push_back(f);
+    out.inside.clear();
+    for (const ForcedFace& f : faces) {
+        (f.reconstructed ? out.forcing : out.solid).push_back(f);
+        if (ghost_ && !f.fresh) out.inside.insert(key_of(f.i, f.j));
+    }
 
     // Image points X_s + L n, L = image_cells h_n (h_n the cells' extent along n), at least 4/3 of phi so that the
     // face's own weight stays at most 3/4, and with a quadratic profile a second one at L2 = L + h_n. Every rank
@@ -115,8 +145,8 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         const Vec2 n = f.normal;
         const Vec2 h = local_spacing(grid_, f.surface);
         const double hn = std::hypot(n.x() * h.x(), n.y() * h.y());
-        const double L = profile_ == SharpProfile::mirror ? std::max(std::abs(f.phi), 0.5 * hn)
-                                                          : std::max(image_cells_ * hn, f.phi / 0.75);
+        const bool mirror = profile_ == SharpProfile::mirror && !f.fresh;
+        const double L = mirror ? std::max(std::abs(f.phi), 0.5 * hn) : std::max(image_cells_ * hn, f.phi / 0.75);
         f.image_distance = L;
         mine.push_back(f.surface + L * n);
         if (profile_ != SharpProfile::quadratic) {

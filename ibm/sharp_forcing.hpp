@@ -46,10 +46,14 @@
 // pressure problem (ImmersedBoundary, FlowSolver::set_pressure_cells): the mirrored ghost values leave a divergence
 // in the first cells inside, which a whole-grid projection pushes through the wall (26 % of U on the Lyn square).
 // A face that leaves a moving body is next to the surface in that step (a body moves less than a cell per step), so
-// with forcing faces it gets the reconstructed value: no face enters the fluid with a solid's history.
+// with forcing faces it gets the reconstructed value: no face enters the fluid with a solid's history. With ghost
+// faces it would enter with the mirror's value (the flow reflected through the wall): in the step it leaves the body
+// it is set as a forcing face is, from the profile between the surface and an image point turbulence.image_distance
+// cells out (linear where the ghost faces mirror), and is free from the next step on.
 // Momentum given to the fluid per unit density, depth and time, for the force measure (a):
 //   sum over the forced faces of V (u_forced - u*) / dt,   and its moment about the body's centre.
 #include <functional>
+#include <unordered_set>
 #include <vector>
 
 #include "body.hpp"
@@ -110,6 +114,7 @@ private:
         Vec2 surface;                 // X_s, the nearest surface point (world)
         Vec2 normal;                  // the outward normal there (world)
         bool reconstructed = false;   // set from the profile (a forcing or ghost face), else to the body's velocity
+        bool fresh = false;           // ghost faces: a face the body left since the last classification
         double weight = 0.0;          // of (u_1 - U_s), u_1 at the first image point (forcing faces)
         double weight2 = 0.0;         // of (u_2 - U_s), u_2 at the second (quadratic profile)
         double image_distance = 0.0;  // L (m)
@@ -121,6 +126,7 @@ private:
         std::size_t first_image = 0;        // this rank's first image point among them
         std::vector<Stencil> images2;       // the second image points (quadratic profile), in the same order
         std::vector<Stencil> images_other;  // the other component at the image points (wall-law profile)
+        std::unordered_set<long long> inside;  // ghost faces: the faces inside a body at the last classification
     };
     bool any_moves() const;
     void classify();

@@ -57,9 +57,10 @@ Body plane_body(double angle_deg) {
 // and y: the reconstruction along the normal (linear between the wall's velocity and a bilinear sample, both exact
 // for a linear field) must leave every forcing face as it is, at any angle of the plane against the grid; the
 // faces inside the solid take the wall's velocity (0), except the ghost faces (numerics.ibm.sharp_faces: ghost), which
-// take the profile carried through the wall: the field itself. Exact to round-off, so held to 1e-12, on the faces 4
-// cells or more from the domain's sides (nearer, an image stencil may lose the boundary faces, which the boundary
-// conditions own, and is renormalised: no longer exact for a linear field).
+// take the profile carried through the wall: the field itself; with ghost faces a face between a cell whose centre is
+// inside and one whose centre is outside (the pressure problem's boundary) takes the wall's velocity. Exact to
+// round-off, so held to 1e-12, on the faces 4 cells or more from the domain's sides (nearer, an image stencil may lose
+// the boundary faces, which the boundary conditions own, and is renormalised: no longer exact for a linear field).
 TEST(SharpForcing, ReconstructionIsExactForALinearShearAtAnyAngle) {
     for (double angle : {0.0, 22.5, 30.0, 45.0, 61.0}) {
         const Grid grid(Axis(uniform_lines(0.0, 1.0, 40), false), Axis(uniform_lines(0.0, 1.0, 36), false),
@@ -90,22 +91,29 @@ TEST(SharpForcing, ReconstructionIsExactForALinearShearAtAnyAngle) {
             long long counts[2] = {static_cast<long long>(forcing.forcing_faces()),
                                    static_cast<long long>(forcing.solid_faces())};
             MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_LONG_LONG, MPI_SUM, grid.comm());
-            EXPECT_GT(counts[0], 40) << "angle " << angle;  // about one row of faces of each component
+            // About one row of faces of each component; with ghost faces the faces on the pressure problem's
+            // boundary take the wall's velocity instead (31-39 reconstructed faces here, one row of one component).
+            EXPECT_GT(counts[0], ghost ? 25 : 40) << "angle " << angle;
             EXPECT_GT(counts[1], 200) << "angle " << angle;
             double largest = 0.0;
             const double margin = 4.0 / 40.0;
             for (int j = 0; j < grid.ny(); ++j)
                 for (int i = 0; i < grid.nx(); ++i)
-                    for (const auto& [f, g, X] :
-                         {std::tuple{&forced.u, &vel.u, Vec2(grid.lx().f(i), grid.ly().c(j))},
-                          std::tuple{&forced.v, &vel.v, Vec2(grid.lx().c(i), grid.ly().f(j))}}) {
+                    for (const auto& [f, g, X, C0] :
+                         {std::tuple{&forced.u, &vel.u, Vec2(grid.lx().f(i), grid.ly().c(j)),
+                                     Vec2(grid.lx().c(i - 1), grid.ly().c(j))},
+                          std::tuple{&forced.v, &vel.v, Vec2(grid.lx().c(i), grid.ly().f(j)),
+                                     Vec2(grid.lx().c(i), grid.ly().c(j - 1))}}) {
                         if (std::min({X.x(), X.y(), 1.0 - X.x(), 1.0 - X.y()}) < margin) continue;
                         // Inside: the wall's velocity, but on the ghost faces (inside, beside the fluid) the profile
                         // carried through the wall, which for a linear field is the field itself.
                         const double phi = outline.signed_distance(X);
+                        const bool staircase =
+                            ghost && (outline.signed_distance(C0) < 0.0) !=
+                                         (outline.signed_distance({grid.lx().c(i), grid.ly().c(j)}) < 0.0);
                         const bool beside = ghost && phi < 0.0 && phi > -1.5 / 40.0 &&
                                             (*f)(i, j) != 0.0;  // a ghost face (deeper ones hold 0)
-                        const double expected = phi < 0.0 && !beside ? 0.0 : (*g)(i, j);
+                        const double expected = staircase || (phi < 0.0 && !beside) ? 0.0 : (*g)(i, j);
                         largest = std::max(largest, std::abs((*f)(i, j) - expected));
                     }
             MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, grid.comm());
