@@ -122,10 +122,10 @@ private:
     // One component's forced faces: the solid ones, then the forcing ones with their image points' stencils.
     struct Component {
         std::vector<ForcedFace> solid, forcing;
-        std::vector<Stencil> images;        // of every rank's image points, this rank's part of each
-        std::size_t first_image = 0;        // this rank's first image point among them
-        std::vector<Stencil> images2;       // the second image points (quadratic profile), in the same order
-        std::vector<Stencil> images_other;  // the other component at the image points (wall-law profile)
+        std::vector<Stencil> images;           // of every rank's image points, this rank's part of each
+        std::size_t first_image = 0;           // this rank's first image point among them
+        std::vector<Stencil> images2;          // the second image points (quadratic profile), in the same order
+        std::vector<Stencil> images_other;     // the other component at the image points (wall-law profile)
         std::unordered_set<long long> inside;  // ghost faces: the faces inside a body at the last classification
     };
     bool any_moves() const;
