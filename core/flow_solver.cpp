@@ -92,15 +92,35 @@ void FlowSolver::fill_boundaries(Velocity& vel) const {
     bc_->apply(vel);
 }
 
-void FlowSolver::set_pressure_cells(const Field2D* fluid) {
-    if (solid_ && fluid) throw std::logic_error("FlowSolver: pressure cells and solid cells together");
-    pressure_cells_ = fluid;
+void FlowSolver::set_pressure_boundary(const PressureBoundary& boundary, bool cells_changed) {
+    if (solid_ && boundary.cells) throw std::logic_error("FlowSolver: a pressure boundary and solid cells together");
+    cut_ = boundary;
+    if (flux_.u.raw().empty()) flux_ = Velocity(*grid_);
+    poisson_->set_face_apertures(cut_.aperture_u, cut_.aperture_v);
+    if (!cells_changed) return poisson_->update_coefficients();
     long long count = 0;
-    if (fluid)
-        for (int j = 0; j < grid_->ny(); ++j)
-            for (int i = 0; i < grid_->nx(); ++i) count += (*fluid)(i, j) != 0.0;
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i) count += (*cut_.cells)(i, j) != 0.0;
     MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, grid_->comm());
-    poisson_->set_fluid_cells(fluid, fluid ? count : grid_->global_cells());
+    poisson_->set_fluid_cells(cut_.cells, count);
+}
+
+double FlowSolver::max_divergence() const {
+    if (!cut_.cells) return chute::max_divergence(*grid_, vel_, fluid_cells());
+    const auto& X = grid_->lx();
+    const auto& Y = grid_->ly();
+    const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v, &cells = *cut_.cells;
+    const Velocity& U = *cut_.body_velocity;
+    auto flux_u = [&](int i, int j) { return au(i, j) * vel_.u(i, j) + (1.0 - au(i, j)) * U.u(i, j); };
+    auto flux_v = [&](int i, int j) { return av(i, j) * vel_.v(i, j) + (1.0 - av(i, j)) * U.v(i, j); };
+    double m = 0.0;
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i)
+            if (cells(i, j) != 0.0)
+                m = std::max(m, std::abs((flux_u(i + 1, j) - flux_u(i, j)) / X.w(i) +
+                                         (flux_v(i, j + 1) - flux_v(i, j)) / Y.w(j)));
+    MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid_->comm());
+    return m;
 }
 
 void FlowSolver::set_solid_cells(const SolidCells* solid) {
@@ -599,7 +619,19 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
         StageTimer::Scope timed(timer_, "poisson");
         halo_->exchange(star_);
         if (solid_) solid_->fill(star_);  // the sides' normal velocity: the hole's Neumann condition
-        divergence(*grid_, star_, 1.0 / dt, source_);
+        if (cut_.cells) {
+            // Through a cut face the fluid's flux on its open part, the body's on the rest.
+            const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
+            const Velocity& U = *cut_.body_velocity;
+            for (int j = 0; j < grid_->ny(); ++j)
+                for (int i = 0; i <= grid_->nx(); ++i)
+                    flux_.u(i, j) = au(i, j) * star_.u(i, j) + (1.0 - au(i, j)) * U.u(i, j);
+            for (int j = 0; j <= grid_->ny(); ++j)
+                for (int i = 0; i < grid_->nx(); ++i)
+                    flux_.v(i, j) = av(i, j) * star_.v(i, j) + (1.0 - av(i, j)) * U.v(i, j);
+            divergence(*grid_, flux_, 1.0 / dt, source_);
+        } else
+            divergence(*grid_, star_, 1.0 / dt, source_);
         const PoissonStats ps = poisson_->solve(source_, phi_, poisson_residual_floor(star_, dt));
         stats.poisson_iterations = ps.iterations;
         stats.poisson_residual = ps.relative_residual;
@@ -609,7 +641,7 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
     StageTimer::Scope timed(timer_, "correction");
     halo_->exchange(phi_);
     bc_->apply_pressure(phi_);
-    subtract_pressure_gradient(*grid_, *bc_, phi_, dt, star_, pressure_cells_);
+    subtract_pressure_gradient(*grid_, *bc_, phi_, dt, star_, cut_.aperture_u, cut_.aperture_v);
     for (int j = 0; j < grid_->ny(); ++j)
         for (int i = 0; i < grid_->nx(); ++i) p_(i, j) += phi_(i, j);
     halo_->exchange(p_);

@@ -107,15 +107,25 @@ public:
     // set_solid_cells() does to the start, so that an impulsive start is divergence-free before the first step.
     void project_start();
     const SolidCells* solid_cells() const { return solid_; }
-    // Cells inside sharp immersed surfaces (ibm/sharp_forcing.hpp, ghost faces), left out of the pressure problem:
-    // no flux of the pressure increment crosses the faces between them and the fluid (Neumann, as on a hole's
-    // sides), so the projection leaves those faces as the carrier set them and the fluid cells beside a surface
-    // are divergence-free with the surface's own normal velocity. The carrier sets their faces (it forces them);
-    // `fluid` is 1 in fluid cells, 0 inside (ghosts included) and must outlive the solver or the next call: call
-    // again after it changed (a moving body). Null: none. Not with solid cells. Collective.
-    void set_pressure_cells(const Field2D* fluid);
-    // 1 in the cells that hold flow, 0 in the others (a hole's, or those set_pressure_cells() left out); null: all.
-    const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : pressure_cells_; }
+    // Sharp immersed surfaces (ibm/sharp_forcing.hpp with ghost faces, ibm/cut_faces.hpp): the pressure problem
+    // follows them. `cells`: 1 in the cells that hold flow, 0 in those left out (their rows the identity);
+    // `aperture_u`, `aperture_v`: the open fraction alpha of each face, which scales its coefficient A / d in the
+    // problem; the flux of the continuity equation through a face is A (alpha u* + (1 - alpha) U_b) with U_b from
+    // `body_velocity`, and the projection corrects the faces with alpha > 0. The fields must outlive the solver or the
+    // next call; call again when they changed (`cells_changed`: the set of cells too, which rebuilds the matrix and
+    // its multigrid hierarchy; else only the coefficients). Not with solid cells. Collective.
+    struct PressureBoundary {
+        const Field2D* cells = nullptr;
+        const Field2D* aperture_u = nullptr;
+        const Field2D* aperture_v = nullptr;
+        const Velocity* body_velocity = nullptr;
+    };
+    void set_pressure_boundary(const PressureBoundary& boundary, bool cells_changed);
+    // The largest |divergence| of the velocity over the cells that hold flow: of the flux through the faces' open
+    // parts and the bodies' through the rest, with a pressure boundary (what the projection makes zero). Collective.
+    double max_divergence() const;
+    // 1 in the cells that hold flow, 0 in the others (a hole's, or those set_pressure_boundary() left out); null: all.
+    const Field2D* fluid_cells() const { return solid_ && !solid_->empty() ? &solid_->fluid() : cut_.cells; }
     // The momentum the last step's fluxes carried into a solid block, per unit time, density and depth (m^3/s^2:
     // the force on it / (rho depth)): the sum over the block's faces of V (H_step - grad p^{n+1/2}), H_step the
     // step's Adams-Bashforth combination of convection and diffusion. The operators are conservative, so the
@@ -229,7 +239,8 @@ private:
     long step_ = 0;
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
-    const Field2D* pressure_cells_ = nullptr;     // set_pressure_cells()
+    PressureBoundary cut_;                        // set_pressure_boundary()
+    Velocity flux_;                               // alpha u* + (1 - alpha) U_b on the faces, with cut_
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
     GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                        // and their velocities on this patch

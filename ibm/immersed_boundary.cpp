@@ -1,5 +1,6 @@
 #include "immersed_boundary.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "direct_forcing.hpp"
@@ -52,6 +53,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       start_momentum_(bodies.size()),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()) {
+    if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
                                                     sharp_profile(settings), settings.wall_profile);
@@ -77,14 +79,14 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
 void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
     forcing_->apply(predicted, dt);
-    if (walls_.near_wall() == NearWall::surface && flow_) {
-        // Ghost faces: the cells inside the bodies where they are now leave the pressure problem
-        // (FlowSolver::set_pressure_cells); the matrix is rebuilt when a body moved across a cell centre.
-        walls_.locate();
-        if (walls_.fluid_version() != pressure_cells_version_) {
-            flow_->set_pressure_cells(&walls_.fluid());
-            pressure_cells_version_ = walls_.fluid_version();
-        }
+    if (cut_ && flow_) {
+        // Ghost faces: the pressure problem follows the surfaces where they are now, through the open fraction of
+        // each face (ibm/cut_faces.hpp); its matrix is rebuilt when a cell opened or shut, else its coefficients.
+        const bool cells_changed = cut_->update() || !pressure_boundary_set_;
+        if (cells_changed || std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); }))
+            flow_->set_pressure_boundary(
+                {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity()}, cells_changed);
+        pressure_boundary_set_ = true;
     }
     // A further pass of the step forces the projected velocity again: the fluid receives the momentum of
     // every pass, and the slip left is the last pass's.

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "carrier.hpp"
+#include "cut_faces.hpp"
 #include "enclosed_momentum.hpp"
 #include "ibm_config.hpp"
 #include "immersed_forcing.hpp"
@@ -77,7 +78,8 @@ private:
     FlowSolver* flow_ = nullptr;
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
     ImmersedWall walls_;
-    long pressure_cells_version_ = -1;  // the walls_.fluid_version() the flow's pressure cells were set from
+    std::unique_ptr<CutFaces> cut_;  // with ghost faces: the faces the surfaces cut, for the pressure problem
+    bool pressure_boundary_set_ = false;
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body

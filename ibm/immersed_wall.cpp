@@ -35,7 +35,6 @@ void ImmersedWall::locate() {
     if (located_ && !any_moves) return;
     located_ = true;
 
-    const std::vector<double> before = fluid_.raw();
     const int margin = static_cast<int>(std::ceil(image_cells_)) + 3;
     // Static bodies are scanned once (a plane bounds half the domain: all of it is scanned).
     if (!static_scanned_) {
@@ -51,7 +50,6 @@ void ImmersedWall::locate() {
     band_ = static_band_;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (bodies_[b].moves()) scan_around(b, margin);
-    if (fluid_.raw() != before) ++fluid_version_;
     // A cell near one body may lie inside another (the block resting on the bed): the nearest surface and
     // the sign of the smallest distance decide.
     std::unordered_map<long long, std::size_t> seen;

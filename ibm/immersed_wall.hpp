@@ -43,8 +43,6 @@ public:
     void locate();
     // 1 in fluid cells, 0 inside a body; owned cells and ghosts.
     const Field2D& fluid() const { return fluid_; }
-    // Counts the changes of fluid() (its cells, not its identity): a solver that depends on it rebuilds on a change.
-    long fluid_version() const { return fluid_version_; }
     // The flow at the image points of this rank's band cells, from u^{n+1} and k (collective).
     std::vector<WallSample> sample(const Velocity& vel, const Field2D& k) const;
 
@@ -65,7 +63,6 @@ private:
     double image_cells_;
     NearWall near_wall_;
     Field2D fluid_, static_fluid_;
-    long fluid_version_ = 0;
     std::vector<BandCell> band_, static_band_;
     bool static_scanned_ = false;
     std::vector<Stencil> su_, sv_, sk_;

@@ -82,21 +82,6 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
                 const bool inside = phi < surface;
-                // Ghost faces: a face between a cell whose centre is inside and one whose centre is outside bounds
-                // the pressure problem (FlowSolver::set_pressure_cells): it takes the body's velocity, so that the
-                // fluid cells' mass balance sees the body's own flux through the staircase of their faces (a rigid
-                // motion's net flux through it is zero) rather than a mirrored value.
-                if (ghost_) {
-                    const Vec2 c0 = is_u ? Vec2(X.c(i - 1), Y.c(j)) : Vec2(X.c(i), Y.c(j - 1));
-                    const Vec2 c1(X.c(i), Y.c(j));
-                    const bool in0 = outline.signed_distance(body.to_body(c0)) < 0.0;
-                    const bool in1 = outline.signed_distance(body.to_body(c1)) < 0.0;
-                    if (in0 != in1) {
-                        candidates.push_back(
-                            {i, j, static_cast<int>(b), volume(i, j), p, std::min(phi, 0.0), p, Vec2(0.0, 0.0), false});
-                        continue;
-                    }
-                }
                 if (ghost_ && !inside) {  // ghost faces: only inside faces, and those the body left since
                     if (out.inside.contains(key_of(i, j))) {
                         const SurfacePoint s = outline.nearest(body.to_body(p));
@@ -222,8 +207,15 @@ void SharpForcing::find_covered_cells() {
                 const double phi = outline.signed_distance(body.to_body(centre));
                 const double size = std::max(X.w(i), Y.w(j));
                 if (done || phi > 1.5 * size || phi < -3.0 * size) continue;
-                if (!(forced(true, i, j) && forced(true, i + 1, j) && forced(false, i, j) && forced(false, i, j + 1)))
-                    continue;
+                // Ghost faces: the cells left out of the pressure problem (its four corners inside: every face shut,
+                // ibm/cut_faces.hpp), whose pressure the solve no longer sets; forcing faces: the cells whose four
+                // faces are forced.
+                auto corner_inside = [&](int a, int b) { return inside_any(Vec2(X.f(a), Y.f(b))); };
+                const bool covered = ghost_ ? corner_inside(i, j) && corner_inside(i + 1, j) &&
+                                                  corner_inside(i, j + 1) && corner_inside(i + 1, j + 1)
+                                            : forced(true, i, j) && forced(true, i + 1, j) && forced(false, i, j) &&
+                                                  forced(false, i, j + 1);
+                if (!covered) continue;
                 done = 1;
                 const SurfacePoint s = outline.nearest(body.to_body(centre));
                 const Vec2 n = body.direction_to_world(s.normal);

@@ -9,8 +9,7 @@
 namespace chute {
 
 FlowHealth flow_health(const FlowSolver& flow) {
-    return {kinetic_energy(flow.grid(), flow.velocity(), flow.fluid_cells()),
-            max_divergence(flow.grid(), flow.velocity(), flow.fluid_cells())};
+    return {kinetic_energy(flow.grid(), flow.velocity(), flow.fluid_cells()), flow.max_divergence()};
 }
 
 std::optional<std::string> HealthCheck::problem(const Model& model, const StepStats& step, const FlowHealth& health) {

@@ -8,7 +8,7 @@ void divergence(const Grid& grid, const Velocity& vel, double scale, Field2D& ou
 }
 
 void subtract_pressure_gradient(const Grid& grid, const BoundaryConditions& bc, const Field2D& p, double dt,
-                                Velocity& vel, const Field2D* fluid) {
+                                Velocity& vel, const Field2D* aperture_u, const Field2D* aperture_v) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     const int nx = grid.nx(), ny = grid.ny();
@@ -17,20 +17,20 @@ void subtract_pressure_gradient(const Grid& grid, const BoundaryConditions& bc, 
     const int i_end = bc.corrects_face(Side::right) ? nx + 1 : nx;
     const int j_begin = bc.corrects_face(Side::bottom) ? 0 : bc.v_first();
     const int j_end = bc.corrects_face(Side::top) ? ny + 1 : ny;
-    if (!fluid) {
+    if (!aperture_u) {
         for (int j = 0; j < ny; ++j)
             for (int i = i_begin; i < i_end; ++i) vel.u(i, j) -= dt * (p(i, j) - p(i - 1, j)) / X.dc(i);
         for (int j = j_begin; j < j_end; ++j)
             for (int i = 0; i < nx; ++i) vel.v(i, j) -= dt * (p(i, j) - p(i, j - 1)) / Y.dc(j);
         return;
     }
-    const Field2D& f = *fluid;
+    const Field2D &au = *aperture_u, &av = *aperture_v;
     for (int j = 0; j < ny; ++j)
         for (int i = i_begin; i < i_end; ++i)
-            if (f(i, j) != 0.0 && f(i - 1, j) != 0.0) vel.u(i, j) -= dt * (p(i, j) - p(i - 1, j)) / X.dc(i);
+            if (au(i, j) > 0.0) vel.u(i, j) -= dt * (p(i, j) - p(i - 1, j)) / X.dc(i);
     for (int j = j_begin; j < j_end; ++j)
         for (int i = 0; i < nx; ++i)
-            if (f(i, j) != 0.0 && f(i, j - 1) != 0.0) vel.v(i, j) -= dt * (p(i, j) - p(i, j - 1)) / Y.dc(j);
+            if (av(i, j) > 0.0) vel.v(i, j) -= dt * (p(i, j) - p(i, j - 1)) / Y.dc(j);
 }
 
 }  // namespace chute

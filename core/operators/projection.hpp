@@ -17,10 +17,11 @@ inline double cell_divergence(const Grid& grid, const Velocity& vel, int i, int 
 
 // out(i, j) = scale * div(vel) on the owned cells.
 void divergence(const Grid& grid, const Velocity& vel, double scale, Field2D& out);
-// vel -= dt grad(p) on the advanced faces and on boundary faces with a pressure (Dirichlet) condition; with
-// `fluid` (1 in the cells of the pressure problem, ghosts included), only on faces between two of its cells.
+// vel -= dt grad(p) on the advanced faces and on boundary faces with a pressure (Dirichlet) condition; with the
+// faces' apertures (FlowSolver::PressureBoundary), only on the faces open to the flow (alpha > 0).
 // p must have valid ghosts.
 void subtract_pressure_gradient(const Grid& grid, const BoundaryConditions& bc, const Field2D& p, double dt,
-                                Velocity& vel, const Field2D* fluid = nullptr);
+                                Velocity& vel, const Field2D* aperture_u = nullptr,
+                                const Field2D* aperture_v = nullptr);
 
 }  // namespace chute

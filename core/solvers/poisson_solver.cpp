@@ -169,6 +169,12 @@ std::vector<double> PoissonSolver::matrix_values() const {
                 s *= f(i, j - 1);
                 n *= f(i, j + 1);
             }
+            if (aperture_u_) {  // a cut face passes flux through its open part only
+                w *= (*aperture_u_)(i, j);
+                e *= (*aperture_u_)(i + 1, j);
+                s *= (*aperture_v_)(i, j);
+                n *= (*aperture_v_)(i, j + 1);
+            }
             diag += w + e + s + n;
             v[0] = diag;
             v[1] = -w;

@@ -50,6 +50,12 @@ public:
     // Leave the cells where `fluid` is 0 out of the problem (null: none); `fluid_cells` counts the others over
     // all ranks. Rebuilds the matrix; the field must outlive the solver or the next call.
     void set_fluid_cells(const Field2D* fluid, long long fluid_cells);
+    // Scale each face's coefficient A / d by its open fraction (cut faces, FlowSolver::PressureBoundary; null: none).
+    // Takes effect at the next update_matrix() or update_coefficients(); the fields must outlive the solver.
+    void set_face_apertures(const Field2D* aperture_u, const Field2D* aperture_v) {
+        aperture_u_ = aperture_u;
+        aperture_v_ = aperture_v;
+    }
     // Solve laplacian(p) = source; p holds the initial guess on entry (warm start) and the solution on exit.
     // absolute_tolerance bounds the residual norm from below (for source ~ 0).
     PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
@@ -78,10 +84,12 @@ private:
     HYPRE_StructSolver pcg_ = nullptr, pfmg_ = nullptr;
     HYPRE_StructVector ones_ = nullptr;  // the null space of the all-Neumann matrix
     std::vector<double> buffer_;
-    const Field2D* fluid_ = nullptr;  // 1 in fluid cells, 0 in solid ones (null: all fluid)
-    double fluid_cells_ = 0.0;        // global count of fluid cells
-    double solid_cells_ = 0.0;        // and of solid ones
-    bool smg_ = false;                // the preconditioner (pfmg_) is SMG: there are solid cells
+    const Field2D* fluid_ = nullptr;       // 1 in fluid cells, 0 in solid ones (null: all fluid)
+    const Field2D* aperture_u_ = nullptr;  // open fractions of the faces (null: all open)
+    const Field2D* aperture_v_ = nullptr;
+    double fluid_cells_ = 0.0;  // global count of fluid cells
+    double solid_cells_ = 0.0;  // and of solid ones
+    bool smg_ = false;          // the preconditioner (pfmg_) is SMG: there are solid cells
     std::array<int, 2> lower_{}, upper_{};
 };
 

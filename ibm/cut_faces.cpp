@@ -1,0 +1,97 @@
+#include "cut_faces.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "direct_forcing.hpp"  // min_spacing_along
+
+namespace chute {
+
+CutFaces::CutFaces(const Grid& grid, const std::vector<Body>& bodies)
+    : grid_(grid),
+      bodies_(bodies),
+      aperture_u_(grid, 1.0),
+      aperture_v_(grid, 1.0),
+      open_(grid, 1.0),
+      body_velocity_(grid) {}
+
+namespace {
+
+// The open fraction of a segment whose ends lie at signed distances a and b (the surface straight between them).
+double open_fraction(double a, double b) {
+    if (a >= 0.0 && b >= 0.0) return 1.0;
+    if (a < 0.0 && b < 0.0) return 0.0;
+    return std::max(a, b) / (std::abs(a) + std::abs(b));
+}
+
+}  // namespace
+
+bool CutFaces::update() {
+    const bool moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
+    if (done_ && !moves) return false;
+    done_ = true;
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    // Corners i in [-1, nx + 1], j in [-1, ny + 1]: the signed distance to the nearest surface (inside any body
+    // negative), and which body.
+    const int cw = nx + 3, ch = ny + 3;
+    std::vector<double> phi(static_cast<std::size_t>(cw) * ch, std::numeric_limits<double>::infinity());
+    std::vector<int> owner(phi.size(), -1);
+    auto at = [&](int i, int j) { return static_cast<std::size_t>(j + 1) * cw + (i + 1); };
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        const Outline& outline = body.outline();
+        const double tolerance = 1e-9 * min_spacing_along(grid_, body);
+        int i0 = -1, i1 = nx + 1, j0 = -1, j1 = ny + 1;
+        if (outline.closed()) {
+            const Vec2 c = body.state().centre;
+            const double reach = outline.reach();
+            while (i0 < i1 && X.f(i0 + 1) < c.x() - reach) ++i0;
+            while (i1 > i0 && X.f(i1 - 1) > c.x() + reach) --i1;
+            while (j0 < j1 && Y.f(j0 + 1) < c.y() - reach) ++j0;
+            while (j1 > j0 && Y.f(j1 - 1) > c.y() + reach) --j1;
+        }
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                double d = outline.signed_distance(body.to_body(Vec2(X.f(i), Y.f(j))));
+                if (d < tolerance) d = std::min(d, -tolerance);  // on the surface: inside
+                if (d < phi[at(i, j)]) phi[at(i, j)] = d, owner[at(i, j)] = static_cast<int>(b);
+            }
+    }
+    aperture_u_.fill(1.0);
+    aperture_v_.fill(1.0);
+    body_velocity_.u.fill(0.0);
+    body_velocity_.v.fill(0.0);
+    auto face = [&](Field2D& alpha, Field2D& U, bool is_u, int i, int j, std::size_t a, std::size_t b) {
+        alpha(i, j) = open_fraction(phi[a], phi[b]);
+        if (alpha(i, j) < 1.0) {
+            const int body = phi[a] <= phi[b] ? owner[a] : owner[b];
+            const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
+            const Vec2 v = bodies_[body].velocity_at(p);
+            U(i, j) = is_u ? v.x() : v.y();
+        }
+    };
+    for (int j = -1; j <= ny; ++j)
+        for (int i = -1; i <= nx + 1; ++i) face(aperture_u_, body_velocity_.u, true, i, j, at(i, j), at(i, j + 1));
+    for (int j = -1; j <= ny + 1; ++j)
+        for (int i = -1; i <= nx; ++i) face(aperture_v_, body_velocity_.v, false, i, j, at(i, j), at(i + 1, j));
+    bool changed = false;
+    for (int j = -1; j <= ny; ++j)
+        for (int i = -1; i <= nx; ++i) {
+            const double open = aperture_u_(i, j) > 0.0 || aperture_u_(i + 1, j) > 0.0 || aperture_v_(i, j) > 0.0 ||
+                                        aperture_v_(i, j + 1) > 0.0
+                                    ? 1.0
+                                    : 0.0;
+            changed = changed || open != open_(i, j);
+            open_(i, j) = open;
+        }
+    int any = changed ? 1 : 0;  // the pressure problem's matrix is rebuilt on every rank
+    MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, grid_.comm());
+    return any != 0;
+}
+
+}  // namespace chute

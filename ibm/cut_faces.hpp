@@ -1,0 +1,43 @@
+#pragma once
+// The faces the bodies' surfaces cut, for a pressure problem that follows a sharp surface continuously (the ghost
+// faces of ibm/sharp_forcing.hpp; FlowSolver::PressureBoundary).
+//
+// Each face of the staggered grid is a segment: a u face x = x_f, y in [y_j, y_j+1]; a v face y = y_f, x in
+// [x_i, x_i+1]. Its aperture alpha is the fraction of it outside every body, from the signed distance at its two ends
+// (the surface taken straight across it: phi_out / (phi_out - phi_in) where the ends are on both sides; an end within
+// 1e-9 of a cell of a surface counts as inside, so that a face lying on a surface on a grid line is shut). The cells
+// with an open face hold flow (the pressure problem's cells); the flux through a face is
+//   A (alpha u + (1 - alpha) U_b),  U_b the body's velocity at the face,
+// the fluid's part through the open fraction and the body's through the rest, so that a cut cell's mass balance
+// carries the body's motion across its shut part (the geometric conservation of a moving surface: Seo & Mittal
+// 2011, JCP 230:7347; Cheny & Botella 2010, JCP 229:1043), and the pressure problem's coefficients A alpha / d change
+// continuously as a body moves, not a whole cell at a time.
+#include <vector>
+
+#include "body.hpp"
+#include "field.hpp"
+
+namespace chute {
+
+class CutFaces {
+public:
+    CutFaces(const Grid& grid, const std::vector<Body>& bodies);
+
+    // The apertures where the bodies are now; true when the set of open cells changed. Static bodies are done once.
+    bool update();
+
+    // Local indices, the faces of the owned cells (u: i = 0..nx, v: j = 0..ny) and their ghosts.
+    const Field2D& aperture_u() const { return aperture_u_; }
+    const Field2D& aperture_v() const { return aperture_v_; }
+    const Velocity& body_velocity() const { return body_velocity_; }  // U_b on the cut and shut faces, else 0
+    const Field2D& open_cells() const { return open_; }               // 1: a face of the cell is open
+
+private:
+    const Grid& grid_;
+    const std::vector<Body>& bodies_;
+    Field2D aperture_u_, aperture_v_, open_;
+    Velocity body_velocity_;
+    bool done_ = false;
+};
+
+}  // namespace chute
