@@ -89,4 +89,9 @@ TEST(Plausibility, SharpInterfaceOutsideItsValidationIsNamed) {
         plausibility_warnings(load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "schaefer_turek_2d1" / "case.yaml",
                                         {"numerics.ibm.interface=sharp"}));
     EXPECT_TRUE(w.empty()) << w.front();
+    // The Lyn square (k-epsilon, fixed) with ghost faces is validated against the body-fitted carrier.
+    const auto lyn = plausibility_warnings(
+        load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "square_cylinder_re22000" / "case.yaml",
+                  {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost"}));
+    EXPECT_TRUE(lyn.empty()) << lyn.front();
 }
