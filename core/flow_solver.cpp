@@ -92,12 +92,11 @@ void FlowSolver::fill_boundaries(Velocity& vel) const {
     bc_->apply(vel);
 }
 
-void FlowSolver::set_pressure_boundary(const PressureBoundary& boundary, bool cells_changed) {
+void FlowSolver::set_pressure_boundary(const PressureBoundary& boundary) {
     if (solid_ && boundary.cells) throw std::logic_error("FlowSolver: a pressure boundary and solid cells together");
     cut_ = boundary;
     if (flux_.u.raw().empty()) flux_ = Velocity(*grid_);
     poisson_->set_face_apertures(cut_.aperture_u, cut_.aperture_v);
-    if (!cells_changed) return poisson_->update_coefficients();
     long long count = 0;
     for (int j = 0; j < grid_->ny(); ++j)
         for (int i = 0; i < grid_->nx(); ++i) count += (*cut_.cells)(i, j) != 0.0;

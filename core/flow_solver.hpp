@@ -112,15 +112,15 @@ public:
     // `aperture_u`, `aperture_v`: the open fraction alpha of each face, which scales its coefficient A / d in the
     // problem; the flux of the continuity equation through a face is A (alpha u* + (1 - alpha) U_b) with U_b from
     // `body_velocity`, and the projection corrects the faces with alpha > 0. The fields must outlive the solver or the
-    // next call; call again when they changed (`cells_changed`: the set of cells too, which rebuilds the matrix and
-    // its multigrid hierarchy; else only the coefficients). Not with solid cells. Collective.
+    // next call; call again when they changed (it rebuilds the matrix and its multigrid hierarchy). Not with solid
+    // cells. Collective.
     struct PressureBoundary {
         const Field2D* cells = nullptr;
         const Field2D* aperture_u = nullptr;
         const Field2D* aperture_v = nullptr;
         const Velocity* body_velocity = nullptr;
     };
-    void set_pressure_boundary(const PressureBoundary& boundary, bool cells_changed);
+    void set_pressure_boundary(const PressureBoundary& boundary);
     // The largest |divergence| of the velocity over the cells that hold flow: of the flux through the faces' open
     // parts and the bodies' through the rest, with a pressure boundary (what the projection makes zero). Collective.
     double max_divergence() const;

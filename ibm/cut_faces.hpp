@@ -23,7 +23,8 @@ class CutFaces {
 public:
     CutFaces(const Grid& grid, const std::vector<Body>& bodies);
 
-    // The apertures where the bodies are now; true when the set of open cells changed. Static bodies are done once.
+    // The apertures where the bodies are now; true when they were computed (the first call, and every call with a
+    // moving body): static bodies are done once.
     bool update();
 
     // Local indices, the faces of the owned cells (u: i = 0..nx, v: j = 0..ny) and their ghosts.
