@@ -68,6 +68,12 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
 void ImmersedBoundary::begin_step(const Velocity& start) {
     for (BodyForcing& f : step_forcing_) f = BodyForcing{};
     forcing_->begin_step();
+    // The first step (and the first after a restart): the pressure problem is cut before the flow predicts, so that
+    // the step's Poisson starting guess is hypre's, as in every later step (the direct solve takes none).
+    if (cut_ && flow_ && !pressure_boundary_set_) {
+        cut_->update();
+        set_pressure_boundary();
+    }
     if (sharp_ && flow_ && !bodies_.empty()) {
         sharp_->extend_pressure(flow_->pressure());
         flow_->refresh_ghosts();
@@ -83,11 +89,7 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     // face (ibm/cut_faces.hpp). With a moving body its matrix and multigrid hierarchy are rebuilt every step: PCG then
     // takes 6 iterations where a hierarchy kept from an earlier step took 14-26 (the moving square: 9.3 s against
     // 10.6 s for 100 steps), and a restart repeats the straight run bit for bit.
-    if (cut_ && flow_ && (cut_->update() || !pressure_boundary_set_)) {
-        flow_->set_pressure_boundary(
-            {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity()});
-        pressure_boundary_set_ = true;
-    }
+    if (cut_ && flow_ && (cut_->update() || !pressure_boundary_set_)) set_pressure_boundary();
     // A further pass of the step forces the projected velocity again: the fluid receives the momentum of
     // every pass, and the slip left is the last pass's.
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -97,6 +99,12 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
         step_forcing_[b].max_slip = pass.max_slip;
         step_forcing_[b].rms_slip = pass.rms_slip;
     }
+}
+
+void ImmersedBoundary::set_pressure_boundary() {
+    flow_->set_pressure_boundary(
+        {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity()});
+    pressure_boundary_set_ = true;
 }
 
 void ImmersedBoundary::place(double t) {

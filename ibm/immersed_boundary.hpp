@@ -80,6 +80,7 @@ private:
     ImmersedWall walls_;
     std::unique_ptr<CutFaces> cut_;  // with ghost faces: the faces the surfaces cut, for the pressure problem
     bool pressure_boundary_set_ = false;
+    void set_pressure_boundary();                   // the flow's pressure problem from cut_
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
