@@ -198,6 +198,11 @@ TEST(CutFaces, OpenFractionsCloseEachCutCellAlongTheSurface) {
                 if (phi > h && (std::min({au0, au1, av0, av1}) < 1.0 || cut.open_cells()(i, j) != 1.0)) ++wrong;
                 if (phi < -h && (std::max({au0, au1, av0, av1}) > 0.0 || cut.open_cells()(i, j) != 0.0)) ++wrong;
             }
+        double worst[2] = {across, longest};
+        int counts[2] = {cut_cells, wrong};
+        MPI_Allreduce(MPI_IN_PLACE, worst, 2, MPI_DOUBLE, MPI_MAX, grid.comm());
+        MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_INT, MPI_SUM, grid.comm());
+        across = worst[0], longest = worst[1], cut_cells = counts[0], wrong = counts[1];
         EXPECT_LT(across, 1e-8) << "angle " << angle;
         EXPECT_LE(longest, std::sqrt(2.0) + 1e-12) << "angle " << angle;
         EXPECT_GT(cut_cells, angle == 0.0 ? 0 : 30) << "angle " << angle;
