@@ -104,22 +104,21 @@ void FlowSolver::set_pressure_boundary(const PressureBoundary& boundary) {
     poisson_->set_fluid_cells(cut_.cells, count);
 }
 
+// Through a cut face the fluid's flux on its open part, the body's on the rest: alpha u + (1 - alpha) U_b on the faces
+// of the owned cells.
+void FlowSolver::cut_flux(const Velocity& vel, Velocity& out) const {
+    const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
+    const Velocity& U = *cut_.body_velocity;
+    for (int j = 0; j < grid_->ny(); ++j)
+        for (int i = 0; i <= grid_->nx(); ++i) out.u(i, j) = au(i, j) * vel.u(i, j) + (1.0 - au(i, j)) * U.u(i, j);
+    for (int j = 0; j <= grid_->ny(); ++j)
+        for (int i = 0; i < grid_->nx(); ++i) out.v(i, j) = av(i, j) * vel.v(i, j) + (1.0 - av(i, j)) * U.v(i, j);
+}
+
 double FlowSolver::max_divergence() const {
     if (!cut_.cells) return chute::max_divergence(*grid_, vel_, fluid_cells());
-    const auto& X = grid_->lx();
-    const auto& Y = grid_->ly();
-    const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v, &cells = *cut_.cells;
-    const Velocity& U = *cut_.body_velocity;
-    auto flux_u = [&](int i, int j) { return au(i, j) * vel_.u(i, j) + (1.0 - au(i, j)) * U.u(i, j); };
-    auto flux_v = [&](int i, int j) { return av(i, j) * vel_.v(i, j) + (1.0 - av(i, j)) * U.v(i, j); };
-    double m = 0.0;
-    for (int j = 0; j < grid_->ny(); ++j)
-        for (int i = 0; i < grid_->nx(); ++i)
-            if (cells(i, j) != 0.0)
-                m = std::max(m, std::abs((flux_u(i + 1, j) - flux_u(i, j)) / X.w(i) +
-                                         (flux_v(i, j + 1) - flux_v(i, j)) / Y.w(j)));
-    MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, grid_->comm());
-    return m;
+    cut_flux(vel_, flux_);
+    return chute::max_divergence(*grid_, flux_, cut_.cells);
 }
 
 void FlowSolver::set_solid_cells(const SolidCells* solid) {
@@ -619,15 +618,7 @@ void FlowSolver::solve_and_correct(StepStats& stats) {
         halo_->exchange(star_);
         if (solid_) solid_->fill(star_);  // the sides' normal velocity: the hole's Neumann condition
         if (cut_.cells) {
-            // Through a cut face the fluid's flux on its open part, the body's on the rest.
-            const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
-            const Velocity& U = *cut_.body_velocity;
-            for (int j = 0; j < grid_->ny(); ++j)
-                for (int i = 0; i <= grid_->nx(); ++i)
-                    flux_.u(i, j) = au(i, j) * star_.u(i, j) + (1.0 - au(i, j)) * U.u(i, j);
-            for (int j = 0; j <= grid_->ny(); ++j)
-                for (int i = 0; i < grid_->nx(); ++i)
-                    flux_.v(i, j) = av(i, j) * star_.v(i, j) + (1.0 - av(i, j)) * U.v(i, j);
+            cut_flux(star_, flux_);
             divergence(*grid_, flux_, 1.0 / dt, source_);
         } else
             divergence(*grid_, star_, 1.0 / dt, source_);

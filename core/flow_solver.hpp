@@ -231,7 +231,8 @@ private:
     double inverse_h2_max_ = 0.0;                  // max of 1/dx^2 + 1/dy^2 over the grid (diffusion limit)
     Velocity vel_, star_, rhs_, rhs_old_;
     Field2D p_, p_old_, phi_, source_;
-    StepStats pending_;  // the predict() half of the step being taken
+    void cut_flux(const Velocity& vel, Velocity& out) const;  // through the open and shut parts of each face
+    StepStats pending_;                                       // the predict() half of the step being taken
     EddyViscosity eddy_;
     bool eddy_on_ = false;
     bool pressure_history_ = false;  // p_old_ holds p^{n-1} (false on the first step and after a grid change)
@@ -240,7 +241,7 @@ private:
     StageTimer* timer_ = nullptr;
     const SolidCells* solid_ = nullptr;
     PressureBoundary cut_;                        // set_pressure_boundary()
-    Velocity flux_;                               // alpha u* + (1 - alpha) U_b on the faces, with cut_
+    mutable Velocity flux_;                       // alpha u + (1 - alpha) U_b on the faces, with cut_ (cut_flux)
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
     GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                        // and their velocities on this patch
