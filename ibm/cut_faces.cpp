@@ -47,7 +47,7 @@ bool CutFaces::update() {
         int i0 = -1, i1 = nx + 1, j0 = -1, j1 = ny + 1;
         if (outline.closed()) {
             const Vec2 c = body.state().centre;
-            const double reach = outline.reach();
+            const double reach = outline.reach() + 2.0 * min_spacing_along(grid_, body);  // every cut face's ends
             while (i0 < i1 && X.f(i0 + 1) < c.x() - reach) ++i0;
             while (i1 > i0 && X.f(i1 - 1) > c.x() + reach) --i1;
             while (j0 < j1 && Y.f(j0 + 1) < c.y() - reach) ++j0;
