@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,25 @@ int main(int argc, char** argv) {
             warmup = std::atoi(argv[++k]);
         else if (a == "--set" && k + 1 < argc)
             settings.push_back(argv[++k]);
-        else
+        else if (a.starts_with("-")) {
+            const bool help = a == "--help" || a == "-h";
+            if (rank == 0 && !help) std::fprintf(stderr, "bench_free_fall: unknown option %s\n", a.c_str());
+            if (rank == 0)
+                std::fprintf(help ? stdout : stderr,
+                             "usage: mpirun -np R bench_free_fall [--steps N] [--warmup N] [--set key=value ...] "
+                             "[case.yaml]\n");
+            MPI_Finalize();
+            return help ? 0 : 2;
+        } else
             path = a;
     }
-    run(path, settings, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
+    try {
+        run(path, settings, steps, warmup, rank, size);  // its solver objects are gone before MPI_Finalize
+    } catch (const std::exception& e) {                  // a case that cannot be read: its message, not a stack trace
+        if (rank == 0) std::fprintf(stderr, "bench_free_fall: %s\n", e.what());
+        MPI_Finalize();
+        return 2;
+    }
     MPI_Finalize();
     return 0;
 }
