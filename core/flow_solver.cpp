@@ -104,15 +104,23 @@ void FlowSolver::set_pressure_boundary(const PressureBoundary& boundary) {
     poisson_->set_fluid_cells(cut_.cells, count);
 }
 
-// Through a cut face the fluid's flux on its open part, the body's on the rest: alpha u + (1 - alpha) U_b on the faces
-// of the owned cells.
+// Through a cut face the fluid's flux on its open part, the body's on the rest: alpha (u + offset) + (1 - alpha) U_b on
+// the faces of the owned cells.
 void FlowSolver::cut_flux(const Velocity& vel, Velocity& out) const {
     const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
     const Velocity& U = *cut_.body_velocity;
+    const Velocity* offset = nullptr;
+    if (cut_.flux_offset) {  // set on the owned faces: the faces shared with the next rank from its halo
+        offset_ = *cut_.flux_offset;
+        halo_->exchange(offset_);
+        offset = &offset_;
+    }
     for (int j = 0; j < grid_->ny(); ++j)
-        for (int i = 0; i <= grid_->nx(); ++i) out.u(i, j) = au(i, j) * vel.u(i, j) + (1.0 - au(i, j)) * U.u(i, j);
+        for (int i = 0; i <= grid_->nx(); ++i)
+            out.u(i, j) = au(i, j) * (vel.u(i, j) + (offset ? offset->u(i, j) : 0.0)) + (1.0 - au(i, j)) * U.u(i, j);
     for (int j = 0; j <= grid_->ny(); ++j)
-        for (int i = 0; i < grid_->nx(); ++i) out.v(i, j) = av(i, j) * vel.v(i, j) + (1.0 - av(i, j)) * U.v(i, j);
+        for (int i = 0; i < grid_->nx(); ++i)
+            out.v(i, j) = av(i, j) * (vel.v(i, j) + (offset ? offset->v(i, j) : 0.0)) + (1.0 - av(i, j)) * U.v(i, j);
 }
 
 double FlowSolver::max_divergence() const {

@@ -110,8 +110,9 @@ public:
     // Sharp immersed surfaces (ibm/sharp_forcing.hpp with ghost faces, ibm/cut_faces.hpp): the pressure problem
     // follows them. `cells`: 1 in the cells that hold flow, 0 in those left out (their rows the identity);
     // `aperture_u`, `aperture_v`: the open fraction alpha of each face, which scales its coefficient A / d in the
-    // problem; the flux of the continuity equation through a face is A (alpha u* + (1 - alpha) U_b) with U_b from
-    // `body_velocity`, and the projection corrects the faces with alpha > 0. The fields must outlive the solver or the
+    // problem; the flux of the continuity equation through a face is A (alpha (u* + offset) + (1 - alpha) U_b) with
+    // U_b from `body_velocity` and the offset from `flux_offset` (null: 0), and the projection corrects the faces with
+    // alpha > 0. The fields must outlive the solver or the
     // next call; call again when they changed (it rebuilds the matrix and its multigrid hierarchy). Not with solid
     // cells. Collective.
     struct PressureBoundary {
@@ -119,6 +120,7 @@ public:
         const Field2D* aperture_u = nullptr;
         const Field2D* aperture_v = nullptr;
         const Velocity* body_velocity = nullptr;
+        const Velocity* flux_offset = nullptr;
     };
     void set_pressure_boundary(const PressureBoundary& boundary);
     // The largest |divergence| of the velocity over the cells that hold flow: of the flux through the faces' open
@@ -242,6 +244,7 @@ private:
     const SolidCells* solid_ = nullptr;
     PressureBoundary cut_;                        // set_pressure_boundary()
     mutable Velocity flux_;                       // alpha u + (1 - alpha) U_b on the faces, with cut_ (cut_flux)
+    mutable Velocity offset_;                     // cut_.flux_offset with its halo (cut_flux)
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
     GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                        // and their velocities on this patch

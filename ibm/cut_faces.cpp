@@ -16,16 +16,15 @@ CutFaces::CutFaces(const Grid& grid, const std::vector<Body>& bodies)
       open_(grid, 1.0),
       body_velocity_(grid) {}
 
-namespace {
-
-// The open fraction of a segment whose ends lie at signed distances a and b (the surface straight between them).
-double open_fraction(double a, double b) {
-    if (a >= 0.0 && b >= 0.0) return 1.0;
-    if (a < 0.0 && b < 0.0) return 0.0;
-    return std::max(a, b) / (std::abs(a) + std::abs(b));
+OpenPart open_part(const Body& body, const Vec2& a, const Vec2& b, double inside_below) {
+    double out = 0.0, in = 1.0;  // fractions along a-b known outside and inside
+    for (int k = 0; k < 40; ++k) {
+        const double mid = 0.5 * (out + in);
+        (body.outline().signed_distance(body.to_body(a + mid * (b - a))) < inside_below ? in : out) = mid;
+    }
+    const double s = 0.5 * (out + in);
+    return {s, a + 0.5 * s * (b - a)};
 }
-
-}  // namespace
 
 bool CutFaces::update() {
     const bool moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
@@ -43,7 +42,7 @@ bool CutFaces::update() {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
-        const double tolerance = 1e-9 * min_spacing_along(grid_, body);
+        const double tolerance = on_surface_tolerance(min_spacing_along(grid_, body));
         int i0 = -1, i1 = nx + 1, j0 = -1, j1 = ny + 1;
         if (outline.closed()) {
             const Vec2 c = body.state().centre;
@@ -64,19 +63,28 @@ bool CutFaces::update() {
     aperture_v_.fill(1.0);
     body_velocity_.u.fill(0.0);
     body_velocity_.v.fill(0.0);
-    auto face = [&](Field2D& alpha, Field2D& U, bool is_u, int i, int j, std::size_t a, std::size_t b) {
-        alpha(i, j) = open_fraction(phi[a], phi[b]);
-        if (alpha(i, j) < 1.0) {
-            const int body = phi[a] <= phi[b] ? owner[a] : owner[b];
-            const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
-            const Vec2 v = bodies_[body].velocity_at(p);
-            U(i, j) = is_u ? v.x() : v.y();
+    // The ends' corners (i, j) and (i, j + 1) for a u face, (i, j) and (i + 1, j) for a v face.
+    auto face = [&](Field2D& alpha, Field2D& U, bool is_u, int i, int j) {
+        const int i2 = is_u ? i : i + 1, j2 = is_u ? j + 1 : j;
+        const double pa = phi[at(i, j)], pb = phi[at(i2, j2)];
+        if (pa >= 0.0 && pb >= 0.0) return;  // open (alpha 1, from the fill)
+        const int body = pa <= pb ? owner[at(i, j)] : owner[at(i2, j2)];
+        if (pa < 0.0 && pb < 0.0)
+            alpha(i, j) = 0.0;
+        else {
+            const Vec2 A(X.f(i), Y.f(j)), B(X.f(i2), Y.f(j2));
+            const double tolerance = on_surface_tolerance(min_spacing_along(grid_, bodies_[body]));
+            alpha(i, j) = pa >= 0.0 ? open_part(bodies_[body], A, B, tolerance).fraction
+                                    : open_part(bodies_[body], B, A, tolerance).fraction;
         }
+        const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
+        const Vec2 v = bodies_[body].velocity_at(p);
+        U(i, j) = is_u ? v.x() : v.y();
     };
     for (int j = -1; j <= ny; ++j)
-        for (int i = -1; i <= nx + 1; ++i) face(aperture_u_, body_velocity_.u, true, i, j, at(i, j), at(i, j + 1));
+        for (int i = -1; i <= nx + 1; ++i) face(aperture_u_, body_velocity_.u, true, i, j);
     for (int j = -1; j <= ny + 1; ++j)
-        for (int i = -1; i <= nx; ++i) face(aperture_v_, body_velocity_.v, false, i, j, at(i, j), at(i + 1, j));
+        for (int i = -1; i <= nx; ++i) face(aperture_v_, body_velocity_.v, false, i, j);
     for (int j = -1; j <= ny; ++j)
         for (int i = -1; i <= nx; ++i)
             open_(i, j) = aperture_u_(i, j) > 0.0 || aperture_u_(i + 1, j) > 0.0 || aperture_v_(i, j) > 0.0 ||

@@ -3,9 +3,12 @@
 // faces of ibm/sharp_forcing.hpp; FlowSolver::PressureBoundary).
 //
 // Each face of the staggered grid is a segment: a u face x = x_f, y in [y_j, y_j+1]; a v face y = y_f, x in
-// [x_i, x_i+1]. Its aperture alpha is the fraction of it outside every body, from the signed distance at its two ends
-// (the surface taken straight across it: phi_out / (phi_out - phi_in) where the ends are on both sides; an end within
-// 1e-9 of a cell of a surface counts as inside, so that a face lying on a surface on a grid line is shut). The cells
+// [x_i, x_i+1]. Its aperture alpha is the fraction of it outside every body: where its ends lie on both sides of a
+// surface, the crossing found by bisection on the signed distance (open_part); a point within 1e-9 of a cell of a
+// surface counts as inside, so that a face lying on a surface on a grid line is shut. (The surface taken straight
+// between the ends, phi_out / (phi_out - phi_in), left the face along a square's side open whole while the corner
+// crossed it: alpha 1 where the open part is the corner's distance, a step each time a moving corner crossed a face
+// line.) Two ends outside: open (a surface bulging through a face between its ends is not seen). The cells
 // with an open face hold flow (the pressure problem's cells); the flux through a face is
 //   A (alpha u + (1 - alpha) U_b),  U_b the body's velocity at the face,
 // the fluid's part through the open fraction and the body's through the rest, so that a cut cell's mass balance
@@ -18,6 +21,19 @@
 #include "field.hpp"
 
 namespace chute {
+
+// A point this close to a surface counts as inside (h: the cell size): a face lying on a surface on a grid line is
+// the body's, as a body-fitted wall's face is (CutFaces, ghost faces of SharpForcing).
+inline double on_surface_tolerance(double h) { return 1e-9 * h; }
+
+// The part of the segment a-b (world) outside `body`, whose end `a` is outside and `b` inside (signed distances
+// below `inside_below` count as inside): its fraction of the segment and its middle. The crossing by bisection (to
+// 1e-12 of the segment), exact for straight and curved surfaces alike; one crossing (a convex body).
+struct OpenPart {
+    double fraction;
+    Vec2 middle;
+};
+OpenPart open_part(const Body& body, const Vec2& a, const Vec2& b, double inside_below);
 
 class CutFaces {
 public:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "direct_forcing.hpp"
 #include "sharp_forcing.hpp"
@@ -56,7 +57,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
     if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
-                                                    sharp_profile(settings), settings.wall_profile);
+                                                    sharp_profile(settings), settings.viscosity, settings.wall_profile);
         sharp_ = sharp.get();
         forcing_ = std::move(sharp);
     } else
@@ -84,6 +85,8 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
 
 void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
+    if (sharp_ && flow_)
+        sharp_->set_eddy_viscosity(flow_->turbulent() ? &std::as_const(*flow_).eddy_viscosity().cell : nullptr);
     forcing_->apply(predicted, dt);
     // Ghost faces: the pressure problem follows the surfaces where they are now, through the open fraction of each
     // face (ibm/cut_faces.hpp). With a moving body its matrix and multigrid hierarchy are rebuilt every step: PCG then
@@ -103,8 +106,19 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
 
 void ImmersedBoundary::set_pressure_boundary() {
     flow_->set_pressure_boundary(
-        {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity()});
+        {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity(), &sharp_->open_flux()});
     pressure_boundary_set_ = true;
+}
+
+ImmersedBoundary::NamedArrays ImmersedBoundary::checkpoint_arrays() const {
+    if (!cut_) return {};
+    return {{"open_flux", sharp_->open_flux_state()}};
+}
+
+void ImmersedBoundary::restored(const NamedArrays& arrays) {
+    if (!cut_) return;
+    // A checkpoint written before the open flux was carried has none: the run goes on without (not bit for bit).
+    if (const auto it = arrays.find("open_flux"); it != arrays.end()) sharp_->restore_open_flux(it->second);
 }
 
 void ImmersedBoundary::place(double t) {

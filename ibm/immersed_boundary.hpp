@@ -63,6 +63,9 @@ public:
         return walls_.sample(vel, k);
     }
     bool walls_between_cells() const override { return walls_.near_wall() == NearWall::surface; }
+    // Ghost faces: the open flux the cut ghost faces carry from step to step (SharpForcing::open_flux).
+    NamedArrays checkpoint_arrays() const override;
+    void restored(const NamedArrays& arrays) override;
 
     void attach(FlowSolver& flow) override { flow_ = &flow; }
 

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "cut_faces.hpp"       // on_surface_tolerance
 #include "direct_forcing.hpp"  // min_spacing_along
 
 namespace chute {
@@ -29,16 +30,18 @@ std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std
 }
 
 SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies,
-                           double image_cells, SharpProfile profile, WallProfile wall_profile)
+                           double image_cells, SharpProfile profile, double viscosity, WallProfile wall_profile)
     : grid_(grid),
       config_(config),
       bodies_(bodies),
       image_cells_(image_cells),
       profile_(profile),
+      viscosity_(viscosity),
       ghost_(config.sharp_faces == IbmConfig::SharpFaces::ghost),
       wall_profile_(std::move(wall_profile)),
       uncovered_(grid, 1.0),
-      result_(bodies.size()) {
+      result_(bodies.size()),
+      open_flux_(grid) {
     for (const Body& body : bodies_) cell_size_.push_back(min_spacing_along(grid_, body));
     if (profile_ == SharpProfile::wall_law && !wall_profile_)
         throw std::invalid_argument("SharpForcing: the wall-law profile needs the law (wall_profile)");
@@ -127,6 +130,10 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     // builds the stencils of every rank's image points (gathered_stencils) and keeps its own part of each.
     std::vector<Vec2> mine, mine2;
     for (ForcedFace& f : out.forcing) {
+        if (ghost_) {
+            const auto [a, b] = end_distances(f.body, is_u, f.i, f.j);
+            f.cut = (a < 0.0) != (b < 0.0);
+        }
         const Vec2 n = f.normal;
         const Vec2 h = local_spacing(grid_, f.surface);
         const double hn = std::hypot(n.x() * h.x(), n.y() * h.y());
@@ -160,7 +167,19 @@ void SharpForcing::classify() {
     placed_ = true;
 }
 
-double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? 1e-9 * cell_size_[b] : 0.0; }
+std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, int i, int j) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const Body& body = bodies_[b];
+    auto distance = [&](const Vec2& at) {
+        const double d = body.outline().signed_distance(body.to_body(at));
+        return d < on_surface(b) ? std::min(d, -on_surface(b)) : d;  // on the surface: inside, as CutFaces
+    };
+    const Vec2 first(X.f(i), Y.f(j));
+    return {distance(first), distance(is_u ? Vec2(X.f(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.f(j)))};
+}
+
+double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? on_surface_tolerance(cell_size_[b]) : 0.0; }
 
 bool SharpForcing::inside_any(const Vec2& X) const {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -174,7 +193,6 @@ bool SharpForcing::forced(bool is_u, int i, int j) const {
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
     auto position = [&](int a, int b) { return is_u ? Vec2(X.f(a), Y.c(b)) : Vec2(X.c(a), Y.f(b)); };
-    if (ghost_) return inside_any(position(i, j));
     return inside_any(position(i, j)) || inside_any(position(i - 1, j)) || inside_any(position(i + 1, j)) ||
            inside_any(position(i, j - 1)) || inside_any(position(i, j + 1));
 }
@@ -293,6 +311,67 @@ void SharpForcing::reconstruct(Component& c, bool is_u, Field2D& field, const Fi
     }
 }
 
+void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vector<double>& predicted,
+                                   const Field2D& forced, double dt) {
+    // The open part's velocity is the face's prediction from its own momentum equation plus the offset it carried
+    // into the step (0 on a face that was fluid: its flux goes on from its fluid value as the surface covers it).
+    Field2D& offset = is_u ? open_flux_.u : open_flux_.v;
+    std::vector<OffsetFace>& faces = is_u ? offset_u_ : offset_v_;
+    std::vector<double> carried(c.forcing.size(), 0.0);
+    for (std::size_t k = 0; k < c.forcing.size(); ++k) {
+        const ForcedFace& f = c.forcing[k];
+        if (!f.cut) continue;
+        const Vec2 h = local_spacing(grid_, f.position);
+        // nu + nu_t at the face: the mean of its two cells' eddy viscosity (k-epsilon).
+        const double nu_t =
+            eddy_ ? 0.5 * ((*eddy_)(f.i, f.j) + (is_u ? (*eddy_)(f.i - 1, f.j) : (*eddy_)(f.i, f.j - 1))) : 0.0;
+        const double damping = (viscosity_ + nu_t) * (2.0 / (h.x() * h.x()) + 2.0 / (h.y() * h.y())) * dt;
+        carried[k] = predicted[k] + offset(f.i, f.j) / (1.0 + damping) - forced(f.i, f.j);
+    }
+    for (const OffsetFace& f : faces) offset(f.i, f.j) = 0.0;
+    faces.clear();
+    for (std::size_t k = 0; k < c.forcing.size(); ++k) {
+        const ForcedFace& f = c.forcing[k];
+        if (!f.cut) continue;
+        offset(f.i, f.j) = carried[k];
+        faces.push_back({f.i, f.j});
+    }
+}
+
+std::vector<double> SharpForcing::open_flux_state() const {
+    // (component, global i, global j, offset) of every rank's cut ghost faces.
+    std::vector<double> mine;
+    for (int component = 0; component < 2; ++component)
+        for (const OffsetFace& f : component == 0 ? offset_u_ : offset_v_)
+            mine.insert(mine.end(), {static_cast<double>(component), static_cast<double>(f.i + grid_.lx().offset),
+                                     static_cast<double>(f.j + grid_.ly().offset),
+                                     (component == 0 ? open_flux_.u : open_flux_.v)(f.i, f.j)});
+    const int count = static_cast<int>(mine.size());
+    std::vector<int> counts(grid_.size()), offsets(grid_.size(), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, grid_.comm());
+    for (int r = 1; r < grid_.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    std::vector<double> all(offsets.back() + counts.back());
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, grid_.comm());
+    return all;
+}
+
+void SharpForcing::restore_open_flux(const std::vector<double>& state) {
+    if (state.size() % 4 != 0) throw std::runtime_error("the checkpoint's open-flux state has a partial entry");
+    for (const OffsetFace& f : offset_u_) open_flux_.u(f.i, f.j) = 0.0;
+    for (const OffsetFace& f : offset_v_) open_flux_.v(f.i, f.j) = 0.0;
+    offset_u_.clear();
+    offset_v_.clear();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    for (std::size_t k = 0; k < state.size(); k += 4) {
+        const bool is_u = state[k] == 0.0;
+        const int i = static_cast<int>(state[k + 1]) - grid_.lx().offset;
+        const int j = static_cast<int>(state[k + 2]) - grid_.ly().offset;
+        if (i < 0 || j < 0 || i >= nx || j >= ny) continue;  // another rank's (the forced faces are owned ones)
+        (is_u ? open_flux_.u : open_flux_.v)(i, j) = state[k + 3];
+        (is_u ? offset_u_ : offset_v_).push_back({i, j});
+    }
+}
+
 bool SharpForcing::any_moves() const {
     return std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
 }
@@ -325,6 +404,7 @@ void SharpForcing::apply(Velocity& star, double dt) {
             const ForcedFace& f = c->forcing[k];
             account(f, is_u, field(f.i, f.j) - before[k]);
         }
+        if (ghost_) carry_open_flux(*c, is_u, before, field, dt);
     }
     if (grid_.size() > 1)
         MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());

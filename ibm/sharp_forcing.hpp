@@ -77,8 +77,9 @@ using WallProfile = std::function<double(double speed, double L, double y)>;
 class SharpForcing final : public ImmersedForcing {
 public:
     // image_cells: L in cells (turbulence.image_distance).
+    // viscosity: the fluid's kinematic viscosity (the cut ghost faces' own momentum, open_flux()).
     SharpForcing(const Grid& grid, const IbmConfig& config, const std::vector<Body>& bodies, double image_cells,
-                 SharpProfile profile, WallProfile wall_profile = {});
+                 SharpProfile profile, double viscosity, WallProfile wall_profile = {});
 
     // Where the bodies are at the start of the step (a free body's update moved it since apply()): the forced faces
     // and the covered cells of extend_pressure(). Static bodies are classified once. Collective.
@@ -104,6 +105,23 @@ public:
     std::size_t forcing_faces() const;
     std::size_t covered_cells() const { return covered_.size(); }
 
+    // Ghost faces: a ghost face a surface cuts carries the fluid's flux through its open part (FlowSolver's pressure
+    // boundary, ibm/cut_faces.hpp) with a velocity of its own, which follows the face's momentum equation as a fluid
+    // face's does: alpha (u + offset) with u the mirrored value the neighbours' stencils read. Each step's offset is
+    // the face's prediction from its own last flux velocity less the mirrored value the forcing sets: the predicted
+    // value (whose stencil had the mirror at its centre) plus the offset carried in, which the face's own viscous
+    // term, nu (2 / dx^2 + 2 / dy^2) = D, damps to offset / (1 + D dt) (without it the offsets drifted to 2 m/s beside
+    // DFG 2D-1's cylinder, where the flow is 0.3); 0 on every other face. A face the surface covers thus carries on
+    // the flux it had as a fluid face (none jumps from the fluid's value to the mirror's as its centre crosses the
+    // surface), and the open part's share alpha of it falls continuously to 0. Set by apply().
+    const Velocity& open_flux() const { return open_flux_; }
+    // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
+    // null: none. The field must outlive the forcing.
+    void set_eddy_viscosity(const Field2D* cell_nu_t) { eddy_ = cell_nu_t; }
+    // The offsets, for a checkpoint: a restart continues bit for bit. Collective (gathered over the ranks).
+    std::vector<double> open_flux_state() const;
+    void restore_open_flux(const std::vector<double>& state);
+
 private:
     struct ForcedFace {
         int i, j;
@@ -118,6 +136,7 @@ private:
         double weight = 0.0;          // of (u_1 - U_s), u_1 at the first image point (forcing faces)
         double weight2 = 0.0;         // of (u_2 - U_s), u_2 at the second (quadratic profile)
         double image_distance = 0.0;  // L (m)
+        bool cut = false;             // ghost faces: a surface crosses it (an end outside, one inside)
     };
     // One component's forced faces: the solid ones, then the forcing ones with their image points' stencils.
     struct Component {
@@ -132,8 +151,13 @@ private:
     void classify();
     void find_covered_cells();
     double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
+    // The signed distances to body b of a face's two ends (below on_surface(): negative, as CutFaces counts them).
+    std::pair<double, double> end_distances(std::size_t b, bool is_u, int i, int j) const;
+    // Ghost faces: the open flux's offsets of the step's cut faces, from their predicted values (before the forcing).
+    void carry_open_flux(const Component& c, bool is_u, const std::vector<double>& predicted, const Field2D& forced,
+                         double dt);
     bool inside_any(const Vec2& X) const;
-    bool forced(bool is_u, int i, int j) const;  // by geometry: inside, or beside a face inside
+    bool forced(bool is_u, int i, int j) const;  // forcing faces: inside, or beside a face inside
     void classify_component(bool is_u, Component& out) const;
     // The forcing faces' values from the image points (sweeps of the reconstruction); collective.
     void reconstruct(Component& c, bool is_u, Field2D& f, const Field2D& other, int sweeps) const;
@@ -146,7 +170,9 @@ private:
     const std::vector<Body>& bodies_;
     double image_cells_;
     SharpProfile profile_;
-    bool ghost_;  // numerics.ibm.sharp_faces: ghost
+    double viscosity_;
+    const Field2D* eddy_ = nullptr;  // set_eddy_viscosity()
+    bool ghost_;                     // numerics.ibm.sharp_faces: ghost
     WallProfile wall_profile_;
     std::vector<double> cell_size_;
     Component u_, v_;
@@ -159,6 +185,11 @@ private:
     Field2D uncovered_;  // 0 in covered_ cells, 1 elsewhere (owned cells)
     bool placed_ = false;
     std::vector<BodyForcing> result_;
+    Velocity open_flux_;  // open_flux(): nonzero only on the faces listed below
+    struct OffsetFace {
+        int i, j;
+    };
+    std::vector<OffsetFace> offset_u_, offset_v_;
 };
 
 }  // namespace chute

@@ -175,7 +175,7 @@ void check_interface(const CaseConfig& c, std::vector<std::string>& out) {
             "sharp_faces: ghost it reads 2.07 (docs/validation.md, \"Sharp interface\")");
     if (moving)
         out.push_back(
-            "numerics.ibm.interface: sharp on a moving body is not validated: its force ripples by 7-10 % as it "
+            "numerics.ibm.interface: sharp on a moving body is not validated: its force ripples by 4-20 % as it "
             "crosses cells (the diffuse interface: 1 %; docs/limitations.md)");
 }
 

@@ -84,7 +84,7 @@ TEST(SharpForcing, ReconstructionIsExactForALinearShearAtAnyAngle) {
                                              std::pair{SharpProfile::quadratic, IbmConfig::SharpFaces::ghost}}) {
             config.sharp_faces = faces;
             const bool ghost = faces == IbmConfig::SharpFaces::ghost;
-            SharpForcing forcing(grid, config, bodies, 2.0, profile);
+            SharpForcing forcing(grid, config, bodies, 2.0, profile, 1e-3);
             forcing.begin_step();
             Velocity forced = vel;
             forcing.apply(forced, 0.01);
@@ -130,7 +130,7 @@ TEST(SharpForcing, PressureExtendsIntoCoveredCellsFromTheFluidAlone) {
     const std::vector<Body> bodies{Body(bc, {0.0, 0.0}, {1.0, 1.0})};
     IbmConfig config;
     config.interface = Interface::sharp;
-    SharpForcing forcing(grid, config, bodies, 2.0, SharpProfile::linear);
+    SharpForcing forcing(grid, config, bodies, 2.0, SharpProfile::linear, 1e-3);
     forcing.begin_step();
     const Vec2 G(0.7, -1.3);
     Field2D p(grid);
