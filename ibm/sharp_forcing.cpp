@@ -13,19 +13,30 @@
 
 namespace chute {
 
-std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std::vector<Vec2>& mine,
-                                       std::size_t& first) {
-    std::vector<double> flat;
-    for (const Vec2& X : mine) flat.insert(flat.end(), {X.x(), X.y()});
-    const int count = static_cast<int>(flat.size());
+namespace {
+
+// Every rank's values, in rank order; `first`: where this rank's start.
+std::vector<double> gathered(const Grid& grid, const std::vector<double>& mine, std::size_t& first) {
+    const int count = static_cast<int>(mine.size());
     std::vector<int> counts(grid.size()), offsets(grid.size(), 0);
     MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, grid.comm());
     for (int r = 1; r < grid.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
     std::vector<double> all(offsets.back() + counts.back());
-    MPI_Allgatherv(flat.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, grid.comm());
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, grid.comm());
+    first = static_cast<std::size_t>(offsets[grid.rank()]);
+    return all;
+}
+
+}  // namespace
+
+std::vector<Stencil> gathered_stencils(const Grid& grid, Staggering s, const std::vector<Vec2>& mine,
+                                       std::size_t& first) {
+    std::vector<double> flat;
+    for (const Vec2& X : mine) flat.insert(flat.end(), {X.x(), X.y()});
+    const std::vector<double> all = gathered(grid, flat, first);
     std::vector<Vec2> points(all.size() / 2);
     for (std::size_t k = 0; k < points.size(); ++k) points[k] = {all[2 * k], all[2 * k + 1]};
-    first = offsets[grid.rank()] / 2;
+    first /= 2;
     return bilinear_stencils(grid, s, points);
 }
 
@@ -346,13 +357,8 @@ std::vector<double> SharpForcing::open_flux_state() const {
             mine.insert(mine.end(), {static_cast<double>(component), static_cast<double>(f.i + grid_.lx().offset),
                                      static_cast<double>(f.j + grid_.ly().offset),
                                      (component == 0 ? open_flux_.u : open_flux_.v)(f.i, f.j)});
-    const int count = static_cast<int>(mine.size());
-    std::vector<int> counts(grid_.size()), offsets(grid_.size(), 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, grid_.comm());
-    for (int r = 1; r < grid_.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-    std::vector<double> all(offsets.back() + counts.back());
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, grid_.comm());
-    return all;
+    std::size_t first = 0;
+    return gathered(grid_, mine, first);
 }
 
 void SharpForcing::restore_open_flux(const std::vector<double>& state) {
