@@ -16,15 +16,25 @@ CutFaces::CutFaces(const Grid& grid, const std::vector<Body>& bodies)
       open_(grid, 1.0),
       body_velocity_(grid) {}
 
-OpenPart open_part(const Body& body, const Vec2& a, const Vec2& b, double inside_below) {
+double surface_distance(const Body& body, const Vec2& point, double tolerance) {
+    const double d = body.outline().signed_distance(body.to_body(point));
+    return d < tolerance ? std::min(d, -tolerance) : d;
+}
+
+namespace {
+
+// The fraction of the segment a-b outside `body`, `a` outside and `b` inside: the crossing by bisection (to 1e-12 of
+// the segment), exact for straight and curved surfaces alike; one crossing (a convex body).
+double open_fraction(const Body& body, const Vec2& a, const Vec2& b, double tolerance) {
     double out = 0.0, in = 1.0;  // fractions along a-b known outside and inside
     for (int k = 0; k < 40; ++k) {
         const double mid = 0.5 * (out + in);
-        (body.outline().signed_distance(body.to_body(a + mid * (b - a))) < inside_below ? in : out) = mid;
+        (surface_distance(body, a + mid * (b - a), tolerance) < 0.0 ? in : out) = mid;
     }
-    const double s = 0.5 * (out + in);
-    return {s, a + 0.5 * s * (b - a)};
+    return 0.5 * (out + in);
 }
+
+}  // namespace
 
 bool CutFaces::update() {
     const bool moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
@@ -54,8 +64,7 @@ bool CutFaces::update() {
         }
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
-                double d = outline.signed_distance(body.to_body(Vec2(X.f(i), Y.f(j))));
-                if (d < tolerance) d = std::min(d, -tolerance);  // on the surface: inside
+                const double d = surface_distance(body, Vec2(X.f(i), Y.f(j)), tolerance);
                 if (d < phi[at(i, j)]) phi[at(i, j)] = d, owner[at(i, j)] = static_cast<int>(b);
             }
     }
@@ -74,8 +83,8 @@ bool CutFaces::update() {
         else {
             const Vec2 A(X.f(i), Y.f(j)), B(X.f(i2), Y.f(j2));
             const double tolerance = on_surface_tolerance(min_spacing_along(grid_, bodies_[body]));
-            alpha(i, j) = pa >= 0.0 ? open_part(bodies_[body], A, B, tolerance).fraction
-                                    : open_part(bodies_[body], B, A, tolerance).fraction;
+            alpha(i, j) = pa >= 0.0 ? open_fraction(bodies_[body], A, B, tolerance)
+                                    : open_fraction(bodies_[body], B, A, tolerance);
         }
         const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
         const Vec2 v = bodies_[body].velocity_at(p);

@@ -4,7 +4,7 @@
 //
 // Each face of the staggered grid is a segment: a u face x = x_f, y in [y_j, y_j+1]; a v face y = y_f, x in
 // [x_i, x_i+1]. Its aperture alpha is the fraction of it outside every body: where its ends lie on both sides of a
-// surface, the crossing found by bisection on the signed distance (open_part); a point within 1e-9 of a cell of a
+// surface, the crossing found by bisection on the signed distance; a point within 1e-9 of a cell of a
 // surface counts as inside, so that a face lying on a surface on a grid line is shut. (The surface taken straight
 // between the ends, phi_out / (phi_out - phi_in), left the face along a square's side open whole while the corner
 // crossed it: alpha 1 where the open part is the corner's distance, a step each time a moving corner crossed a face
@@ -25,15 +25,9 @@ namespace chute {
 // A point this close to a surface counts as inside (h: the cell size): a face lying on a surface on a grid line is
 // the body's, as a body-fitted wall's face is (CutFaces, ghost faces of SharpForcing).
 inline double on_surface_tolerance(double h) { return 1e-9 * h; }
-
-// The part of the segment a-b (world) outside `body`, whose end `a` is outside and `b` inside (signed distances
-// below `inside_below` count as inside): its fraction of the segment and its middle. The crossing by bisection (to
-// 1e-12 of the segment), exact for straight and curved surfaces alike; one crossing (a convex body).
-struct OpenPart {
-    double fraction;
-    Vec2 middle;
-};
-OpenPart open_part(const Body& body, const Vec2& a, const Vec2& b, double inside_below);
+// The signed distance of a world point to a body's surface, negative inside, with the points within `tolerance` of
+// the surface taken inside (at most -tolerance).
+double surface_distance(const Body& body, const Vec2& point, double tolerance);
 
 class CutFaces {
 public:

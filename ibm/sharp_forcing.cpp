@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "cut_faces.hpp"       // on_surface_tolerance
+#include "cut_faces.hpp"       // on_surface_tolerance, surface_distance
 #include "direct_forcing.hpp"  // min_spacing_along
 
 namespace chute {
@@ -182,12 +182,8 @@ std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, 
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
     const Body& body = bodies_[b];
-    auto distance = [&](const Vec2& at) {
-        const double d = body.outline().signed_distance(body.to_body(at));
-        return d < on_surface(b) ? std::min(d, -on_surface(b)) : d;  // on the surface: inside, as CutFaces
-    };
-    const Vec2 first(X.f(i), Y.f(j));
-    return {distance(first), distance(is_u ? Vec2(X.f(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.f(j)))};
+    const Vec2 second = is_u ? Vec2(X.f(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.f(j));
+    return {surface_distance(body, Vec2(X.f(i), Y.f(j)), on_surface(b)), surface_distance(body, second, on_surface(b))};
 }
 
 double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? on_surface_tolerance(cell_size_[b]) : 0.0; }
