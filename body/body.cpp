@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -47,6 +48,14 @@ BodyState PrescribedMotion::at(double t) const {
             break;
     }
     return s;
+}
+
+double longest_step(const Vec2& velocity, double angular_velocity, const Vec2& acceleration,
+                    double angular_acceleration, double reach, double distance) {
+    const double v = velocity.norm() + std::abs(angular_velocity) * reach;
+    const double a = acceleration.norm() + std::abs(angular_acceleration) * reach;
+    if (a > 0.0) return 2.0 * distance / (v + std::sqrt(v * v + 2.0 * a * distance));
+    return v > 0.0 ? distance / v : std::numeric_limits<double>::infinity();
 }
 
 namespace {

@@ -34,6 +34,12 @@ private:
     double angle0_ = 0.0;
 };
 
+// The longest step over which no point of an outline of the given reach (from its centre) travels further than
+// `distance`, its velocity and acceleration held: v dt + a dt^2 / 2 <= distance, with v and a the centre's plus
+// the spin's times the reach (the fastest point). Infinite for a body at rest that does not accelerate.
+double longest_step(const Vec2& velocity, double angular_velocity, const Vec2& acceleration,
+                    double angular_acceleration, double reach, double distance);
+
 class Body {
 public:
     // Builds the outline of the case's body; `domain_min/max` clip planes to the domain.

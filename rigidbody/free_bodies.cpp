@@ -40,14 +40,9 @@ double FreeBodies::max_dt(double cfl) const {
     double dt = std::numeric_limits<double>::infinity();
     for (const Free& f : free_) {
         const Body& body = bodies_[f.index];
-        const double h = cfl * carrier_.cell_size(f.index);
-        // Fastest point of the outline: the centre's speed plus the spin times the reach; same for the
-        // acceleration. Largest dt with v dt + a dt^2 / 2 <= h.
-        const double reach = body.outline().reach();
-        const double v = body.state().velocity.norm() + std::abs(body.state().angular_velocity) * reach;
-        const double a = f.acceleration.norm() + std::abs(f.angular_acceleration) * reach;
-        const double step = a > 0.0 ? 2.0 * h / (v + std::sqrt(v * v + 2.0 * a * h)) : (v > 0.0 ? h / v : dt);
-        dt = std::min(dt, step);
+        dt = std::min(dt,
+                      longest_step(body.state().velocity, body.state().angular_velocity, f.acceleration,
+                                   f.angular_acceleration, body.outline().reach(), cfl * carrier_.cell_size(f.index)));
     }
     return dt;
 }

@@ -52,7 +52,21 @@ Model::Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier
         turbulence_ = std::make_unique<KEpsilon>(k_epsilon_settings(config_), *flow_, *carrier_);
 }
 
-double Model::stable_dt() const { return std::min(flow_->next_dt(), free_->max_dt(config_.cfl)); }
+double Model::stable_dt() const {
+    double dt = std::min(flow_->next_dt(), free_->max_dt(config_.cfl));
+    // With dt auto a prescribed body moves numerics.cfl cells per step at most, as a free one does: started
+    // impulsively in still water it sets the first steps alone (the flow's CFL sees water at rest). A fixed dt is
+    // the user's, for the prescribed motion as for the flow.
+    if (config_.fixed_dt) return dt;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const Body& body = bodies_[b];
+        if (!body.moves() || body.free()) continue;
+        const BodyState& s = body.state();
+        dt = std::min(dt, longest_step(s.velocity, s.angular_velocity, s.acceleration, s.angular_acceleration,
+                                       body.outline().reach(), config_.cfl * carrier_->cell_size(b)));
+    }
+    return dt;
+}
 
 std::optional<WallTurbulence> Model::wall_turbulence() const {
     if (!turbulence_) return std::nullopt;

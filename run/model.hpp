@@ -25,7 +25,7 @@ public:
     Model(const Model&) = delete;
     Model& operator=(const Model&) = delete;
 
-    // The largest stable step: the flow's (CFL, diffusion, fixed) and the free bodies' (numerics.cfl cells).
+    // The largest stable step: the flow's (CFL, diffusion, fixed) and the moving bodies' (numerics.cfl cells per step).
     double stable_dt() const;
     // k and the wall law when a turbulence model runs (the turbulent part of the surface forces), else empty.
     std::optional<WallTurbulence> wall_turbulence() const;
