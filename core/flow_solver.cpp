@@ -479,7 +479,13 @@ bool FlowSolver::implicit_step(double dt) const {
 }
 
 void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
-    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, line_velocities());
+    const Velocity* wall = nullptr;
+    if (wall_faces_) {  // set on the owned faces: those shared with the next rank from its halo
+        wall_faces_halo_ = *wall_faces_;
+        halo_->exchange(wall_faces_halo_);
+        wall = &wall_faces_halo_;
+    }
+    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, line_velocities(), wall);
     if (implicit_now_)
         add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else if (eddy_on_)

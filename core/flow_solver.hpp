@@ -123,6 +123,10 @@ public:
         const Velocity* flux_offset = nullptr;
     };
     void set_pressure_boundary(const PressureBoundary& boundary);
+    // Faces a sharp immersed surface sets from inside its bodies (nonzero; the owned faces, null: none): the
+    // convective flux between one of them and its neighbour is the wall's (core/operators/convection.hpp). The field
+    // must outlive the solver or the next call; it is read, with its halo exchanged here, at every step's prediction.
+    void set_wall_faces(const Velocity* faces) { wall_faces_ = faces; }
     // The largest |divergence| of the velocity over the cells that hold flow: of the flux through the faces' open
     // parts and the bodies' through the rest, with a pressure boundary (what the projection makes zero). Collective.
     double max_divergence() const;
@@ -245,6 +249,8 @@ private:
     PressureBoundary cut_;                        // set_pressure_boundary()
     mutable Velocity flux_;                       // alpha u + (1 - alpha) U_b on the faces, with cut_ (cut_flux)
     mutable Velocity offset_;                     // cut_.flux_offset with its halo (cut_flux)
+    const Velocity* wall_faces_ = nullptr;        // set_wall_faces()
+    mutable Velocity wall_faces_halo_;            // *wall_faces_ with its halo (explicit_rhs)
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}
     GridMotion motion_;                           // how the grid's lines move (translate_grid, band/)
     LineVelocities lines_;                        // and their velocities on this patch

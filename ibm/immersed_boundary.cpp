@@ -83,6 +83,12 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
         if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
 }
 
+void ImmersedBoundary::attach(FlowSolver& flow) {
+    flow_ = &flow;
+    // Ghost faces hold mirrored values: the convective flux beside them is the wall's (core/operators/convection.hpp).
+    if (cut_) flow_->set_wall_faces(&sharp_->wall_faces());
+}
+
 void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
     if (sharp_ && flow_)

@@ -67,7 +67,7 @@ public:
     NamedArrays checkpoint_arrays() const override;
     void restored(const NamedArrays& arrays) override;
 
-    void attach(FlowSolver& flow) override { flow_ = &flow; }
+    void attach(FlowSolver& flow) override;
 
     const ImmersedForcing& forcing() const { return *forcing_; }
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }

@@ -52,7 +52,8 @@ SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std:
       wall_profile_(std::move(wall_profile)),
       uncovered_(grid, 1.0),
       result_(bodies.size()),
-      open_flux_(grid) {
+      open_flux_(grid),
+      wall_faces_(grid) {
     for (const Body& body : bodies_) cell_size_.push_back(min_spacing_along(grid_, body));
     if (profile_ == SharpProfile::wall_law && !wall_profile_)
         throw std::invalid_argument("SharpForcing: the wall-law profile needs the law (wall_profile)");
@@ -175,6 +176,15 @@ void SharpForcing::classify() {
     classify_component(true, u_);
     classify_component(false, v_);
     find_covered_cells();
+    if (ghost_) {
+        wall_faces_.u.fill(0.0);
+        wall_faces_.v.fill(0.0);
+        for (auto [c, field] : {std::pair{&u_, &wall_faces_.u}, std::pair{&v_, &wall_faces_.v}}) {
+            for (const ForcedFace& f : c->solid) (*field)(f.i, f.j) = 1.0;
+            for (const ForcedFace& f : c->forcing)
+                if (!f.fresh) (*field)(f.i, f.j) = 1.0;
+        }
+    }
     placed_ = true;
 }
 

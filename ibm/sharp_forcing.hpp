@@ -118,6 +118,10 @@ public:
     // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
     // null: none. The field must outlive the forcing.
     void set_eddy_viscosity(const Field2D* cell_nu_t) { eddy_ = cell_nu_t; }
+    // Ghost faces: 1 on the faces inside a body whose values the forcing sets (the ghost faces' mirror, the body's
+    // velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are fluid
+    // faces); owned faces. The convection takes the wall's flux beside them (FlowSolver::set_wall_faces).
+    const Velocity& wall_faces() const { return wall_faces_; }
     // The offsets, for a checkpoint: a restart continues bit for bit. Collective (gathered over the ranks).
     std::vector<double> open_flux_state() const;
     void restore_open_flux(const std::vector<double>& state);
@@ -185,7 +189,8 @@ private:
     Field2D uncovered_;  // 0 in covered_ cells, 1 elsewhere (owned cells)
     bool placed_ = false;
     std::vector<BodyForcing> result_;
-    Velocity open_flux_;  // open_flux(): nonzero only on the faces listed below
+    Velocity open_flux_;   // open_flux(): nonzero only on the faces listed below
+    Velocity wall_faces_;  // wall_faces()
     struct OffsetFace {
         int i, j;
     };

@@ -13,7 +13,18 @@ namespace {
 // cells stretch, the change of their volume is the flow solver's, core/operators/line_motion.hpp).
 template <ConvectionScheme S, bool Moving>
 void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                     const LineVelocities* lv) {
+                     const LineVelocities* lv, const Velocity* wall) {
+    // A face value between a face a sharp surface sets (wall) and any other: linear interpolation, which the
+    // ghost's mirror makes the wall's velocity (see convection.hpp).
+    const auto value = [&](bool at_wall, double flux, double qm, double q0, double q1, double qp, double w1) {
+        return at_wall ? q0 + w1 * (q1 - q0) : transported<S>(flux, qm, q0, q1, qp, w1);
+    };
+    const auto wall_u = [&](int i0, int j0, int i1, int j1) {
+        return wall && (wall->u(i0, j0) != 0.0 || wall->u(i1, j1) != 0.0);
+    };
+    const auto wall_v = [&](int i0, int j0, int i1, int j1) {
+        return wall && (wall->v(i0, j0) != 0.0 || wall->v(i1, j1) != 0.0);
+    };
     const auto wx_line = [&](int i) { return Moving ? lv->x(i) : 0.0; };
     const auto wy_line = [&](int j) { return Moving ? lv->y(j) : 0.0; };
     const auto wx_centre = [&](int i) { return Moving ? lv->xc(i) : 0.0; };
@@ -36,14 +47,18 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
             const double wxe = wx_centre(i), wxw = wx_centre(i - 1);
             const double Ue = 0.5 * (u(i, j) + u(i + 1, j)) - wxe;
             const double Uw = 0.5 * (u(i - 1, j) + u(i, j)) - wxw;
-            const double fe = Ue * transported<S>(Ue, u(i - 1, j), u(i, j), u(i + 1, j), u(i + 2, j), 0.5);
-            const double fw = Uw * transported<S>(Uw, u(i - 2, j), u(i - 1, j), u(i, j), u(i + 1, j), 0.5);
+            const double fe =
+                Ue * value(wall_u(i, j, i + 1, j), Ue, u(i - 1, j), u(i, j), u(i + 1, j), u(i + 2, j), 0.5);
+            const double fw =
+                Uw * value(wall_u(i - 1, j, i, j), Uw, u(i - 2, j), u(i - 1, j), u(i, j), u(i + 1, j), 0.5);
             // north/south faces: the volume flux through [xc(i-1), xc(i)] splits into the two cells' v faces.
             const double a0 = (X.f(i) - X.c(i - 1)) / X.dc(i), a1 = 1.0 - a0;
             const double Vn = a0 * v(i - 1, j + 1) + a1 * v(i, j + 1) - wyn;
             const double Vs = a0 * v(i - 1, j) + a1 * v(i, j) - wys;
-            const double fn = Vn * transported<S>(Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
-            const double fs = Vs * transported<S>(Vs, u(i, j - 2), u(i, j - 1), u(i, j), u(i, j + 1), ws);
+            const double fn =
+                Vn * value(wall_u(i, j, i, j + 1), Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
+            const double fs =
+                Vs * value(wall_u(i, j - 1, i, j), Vs, u(i, j - 2), u(i, j - 1), u(i, j), u(i, j + 1), ws);
             out.u(i, j) = -((fe - fw) / X.dc(i) + (fn - fs) / hy);
         }
     }
@@ -54,15 +69,19 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
         for (int i = 0; i < nx; ++i) {
             const double Vn = 0.5 * (v(i, j) + v(i, j + 1)) - wyn;
             const double Vs = 0.5 * (v(i, j - 1) + v(i, j)) - wys;
-            const double fn = Vn * transported<S>(Vn, v(i, j - 1), v(i, j), v(i, j + 1), v(i, j + 2), 0.5);
-            const double fs = Vs * transported<S>(Vs, v(i, j - 2), v(i, j - 1), v(i, j), v(i, j + 1), 0.5);
+            const double fn =
+                Vn * value(wall_v(i, j, i, j + 1), Vn, v(i, j - 1), v(i, j), v(i, j + 1), v(i, j + 2), 0.5);
+            const double fs =
+                Vs * value(wall_v(i, j - 1, i, j), Vs, v(i, j - 2), v(i, j - 1), v(i, j), v(i, j + 1), 0.5);
             const double wxe = wx_line(i + 1), wxw = wx_line(i);
             const double Ue = b0 * u(i + 1, j - 1) + b1 * u(i + 1, j) - wxe;
             const double Uw = b0 * u(i, j - 1) + b1 * u(i, j) - wxw;
             const double we = (X.f(i + 1) - X.c(i)) / X.dc(i + 1);
             const double ww = (X.f(i) - X.c(i - 1)) / X.dc(i);
-            const double fe = Ue * transported<S>(Ue, v(i - 1, j), v(i, j), v(i + 1, j), v(i + 2, j), we);
-            const double fw = Uw * transported<S>(Uw, v(i - 2, j), v(i - 1, j), v(i, j), v(i + 1, j), ww);
+            const double fe =
+                Ue * value(wall_v(i, j, i + 1, j), Ue, v(i - 1, j), v(i, j), v(i + 1, j), v(i + 2, j), we);
+            const double fw =
+                Uw * value(wall_v(i - 1, j, i, j), Uw, v(i - 2, j), v(i - 1, j), v(i, j), v(i + 1, j), ww);
             out.v(i, j) = -((fe - fw) / X.w(i) + (fn - fs) / Y.dc(j));
         }
     }
@@ -71,13 +90,13 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
 }  // namespace
 
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                const LineVelocities* lines) {
+                const LineVelocities* lines, const Velocity* wall_faces) {
     const bool moving = lines && !lines->zero();
     const auto run = [&]<ConvectionScheme S>() {
         if (moving)
-            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines);
+            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines, wall_faces);
         else
-            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr);
+            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr, wall_faces);
     };
     switch (scheme) {
         case ConvectionScheme::central:
