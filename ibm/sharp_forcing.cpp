@@ -179,10 +179,12 @@ void SharpForcing::classify() {
     if (ghost_) {
         wall_faces_.u.fill(0.0);
         wall_faces_.v.fill(0.0);
+        // Strictly inside: a face on the surface (a wall on a grid line) holds the wall's own velocity, as a
+        // body-fitted wall's face does, and the flux between it and the next face lies half a cell into the fluid.
         for (auto [c, field] : {std::pair{&u_, &wall_faces_.u}, std::pair{&v_, &wall_faces_.v}}) {
-            for (const ForcedFace& f : c->solid) (*field)(f.i, f.j) = 1.0;
-            for (const ForcedFace& f : c->forcing)
-                if (!f.fresh) (*field)(f.i, f.j) = 1.0;
+            for (const std::vector<ForcedFace>* faces : {&c->solid, &c->forcing})
+                for (const ForcedFace& f : *faces)
+                    if (!f.fresh && f.phi < -on_surface(f.body)) (*field)(f.i, f.j) = 1.0;
         }
     }
     placed_ = true;

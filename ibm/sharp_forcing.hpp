@@ -118,9 +118,10 @@ public:
     // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
     // null: none. The field must outlive the forcing.
     void set_eddy_viscosity(const Field2D* cell_nu_t) { eddy_ = cell_nu_t; }
-    // Ghost faces: 1 on the faces inside a body whose values the forcing sets (the ghost faces' mirror, the body's
-    // velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are fluid
-    // faces); owned faces. The convection takes the wall's flux beside them (FlowSolver::set_wall_faces).
+    // Ghost faces: 1 on the faces strictly inside a body whose values the forcing sets (the ghost faces' mirror, the
+    // body's velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are
+    // fluid faces; a face on the surface holds the wall's own velocity, as a body-fitted wall's face); owned faces. The
+    // convection takes the wall's flux beside them (FlowSolver::set_wall_faces).
     const Velocity& wall_faces() const { return wall_faces_; }
     // The offsets, for a checkpoint: a restart continues bit for bit. Collective (gathered over the ranks).
     std::vector<double> open_flux_state() const;
