@@ -145,6 +145,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         if (ghost_) {
             const auto [a, b] = end_distances(f.body, is_u, f.i, f.j);
             f.cut = (a < 0.0) != (b < 0.0);
+            f.open_phi = 0.5 * std::max({a, b, 0.0});
         }
         const Vec2 n = f.normal;
         const Vec2 h = local_spacing(grid_, f.surface);
@@ -156,11 +157,15 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
         if (profile_ != SharpProfile::quadratic) {
             f.weight = f.phi / L;
             f.weight2 = 0.0;
+            f.open_weight = f.open_phi / L;
         } else {
             // Lagrange weights of the quadratic through (0, U_s), (L, u_1), (L2, u_2), at phi.
             const double L2 = L + hn, y = f.phi;
             f.weight = y * (L2 - y) / (L * (L2 - L));
             f.weight2 = -y * (L - y) / (L2 * (L2 - L));
+            const double o = f.open_phi;
+            f.open_weight = o * (L2 - o) / (L * (L2 - L));
+            f.open_weight2 = -o * (L - o) / (L2 * (L2 - L));
             mine2.push_back(f.surface + L2 * n);
         }
     }
@@ -290,7 +295,7 @@ double SharpForcing::target(const ForcedFace& f, bool is_u, const Vec2& at) cons
 }
 
 std::vector<double> SharpForcing::reconstruction(const Component& c, bool is_u, const Field2D& field,
-                                                 const Field2D& other) const {
+                                                 const Field2D& other, bool open) const {
     const std::vector<double> image = interpolate(grid_, c.images, field);
     if (profile_ == SharpProfile::wall_law) {
         // The velocity relative to the surface at the image point, split along the normal and the surface: the
@@ -305,8 +310,9 @@ std::vector<double> SharpForcing::reconstruction(const Component& c, bool is_u, 
             const double wn = w.dot(f.normal);
             const Vec2 wt = w - wn * f.normal;
             const double speed = wt.norm();
-            const double ratio = speed > 0.0 ? wall_profile_(speed, f.image_distance, f.phi) / speed : 0.0;
-            const Vec2 u = Us + ratio * wt + (f.phi / f.image_distance) * wn * f.normal;
+            const double y = open ? f.open_phi : f.phi;
+            const double ratio = speed > 0.0 ? wall_profile_(speed, f.image_distance, y) / speed : 0.0;
+            const Vec2 u = Us + ratio * wt + (y / f.image_distance) * wn * f.normal;
             values[k] = is_u ? u.x() : u.y();
         }
         return values;
@@ -318,7 +324,8 @@ std::vector<double> SharpForcing::reconstruction(const Component& c, bool is_u, 
         const ForcedFace& f = c.forcing[k];
         const double Us = target(f, is_u, f.surface);
         const std::size_t l = c.first_image + k;
-        values[k] = Us + f.weight * (image[l] - Us) + f.weight2 * (image2[l] - Us);
+        values[k] = open ? Us + f.open_weight * (image[l] - Us) + f.open_weight2 * (image2[l] - Us)
+                         : Us + f.weight * (image[l] - Us) + f.weight2 * (image2[l] - Us);
     }
     return values;
 }
@@ -331,21 +338,36 @@ void SharpForcing::reconstruct(Component& c, bool is_u, Field2D& field, const Fi
 }
 
 void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vector<double>& predicted,
-                                   const Field2D& forced, double dt) {
-    // The open part's velocity is the face's prediction from its own momentum equation plus the offset it carried
-    // into the step (0 on a face that was fluid: its flux goes on from its fluid value as the surface covers it).
+                                   const Field2D& forced, const std::vector<double>& profile, double dt) {
     Field2D& offset = is_u ? open_flux_.u : open_flux_.v;
     std::vector<OffsetFace>& faces = is_u ? offset_u_ : offset_v_;
+    const int stride = grid_.nx() + 2 * kGhost;
+    std::unordered_set<long long> was_cut;  // in the last step (the list is in the checkpoint)
+    for (const OffsetFace& f : faces) was_cut.insert(static_cast<long long>(f.j) * stride + f.i);
     std::vector<double> carried(c.forcing.size(), 0.0);
     for (std::size_t k = 0; k < c.forcing.size(); ++k) {
         const ForcedFace& f = c.forcing[k];
         if (!f.cut) continue;
+        const Body& body = bodies_[f.body];
+        const double to_profile = profile[k] - forced(f.i, f.j);
+        if (!body.moves()) {
+            carried[k] = to_profile;
+            continue;
+        }
         const Vec2 h = local_spacing(grid_, f.position);
+        const Vec2 U = body.velocity_at(f.surface);
+        if (!was_cut.contains(static_cast<long long>(f.j) * stride + f.i)) {
+            // Just cut: by a surface advancing over a fluid face, its own prediction; by one receding from a face
+            // that was inside, the profile's.
+            carried[k] = U.dot(f.normal) > 0.0 ? predicted[k] - forced(f.i, f.j) : to_profile;
+            continue;
+        }
         // nu + nu_t at the face: the mean of its two cells' eddy viscosity (k-epsilon).
         const double nu_t =
             eddy_ ? 0.5 * ((*eddy_)(f.i, f.j) + (is_u ? (*eddy_)(f.i - 1, f.j) : (*eddy_)(f.i, f.j - 1))) : 0.0;
-        const double damping = (viscosity_ + nu_t) * (2.0 / (h.x() * h.x()) + 2.0 / (h.y() * h.y())) * dt;
-        carried[k] = predicted[k] + offset(f.i, f.j) / (1.0 + damping) - forced(f.i, f.j);
+        const double rate = (viscosity_ + nu_t) * (2.0 / (h.x() * h.x()) + 2.0 / (h.y() * h.y())) +
+                            std::abs(U.x()) / h.x() + std::abs(U.y()) / h.y();
+        carried[k] = (offset(f.i, f.j) + rate * dt * to_profile) / (1.0 + rate * dt);
     }
     for (const OffsetFace& f : faces) offset(f.i, f.j) = 0.0;
     faces.clear();
@@ -418,7 +440,8 @@ void SharpForcing::apply(Velocity& star, double dt) {
             const ForcedFace& f = c->forcing[k];
             account(f, is_u, field(f.i, f.j) - before[k]);
         }
-        if (ghost_) carry_open_flux(*c, is_u, before, field, dt);
+        if (ghost_)
+            carry_open_flux(*c, is_u, before, field, reconstruction(*c, is_u, field, is_u ? star.v : star.u, true), dt);
     }
     if (grid_.size() > 1)
         MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());

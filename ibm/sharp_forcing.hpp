@@ -106,14 +106,19 @@ public:
     std::size_t covered_cells() const { return covered_.size(); }
 
     // Ghost faces: a ghost face a surface cuts carries the fluid's flux through its open part (FlowSolver's pressure
-    // boundary, ibm/cut_faces.hpp) with a velocity of its own, which follows the face's momentum equation as a fluid
-    // face's does: alpha (u + offset) with u the mirrored value the neighbours' stencils read. Each step's offset is
-    // the face's prediction from its own last flux velocity less the mirrored value the forcing sets: the predicted
-    // value (whose stencil had the mirror at its centre) plus the offset carried in, which the face's own viscous
-    // term, nu (2 / dx^2 + 2 / dy^2) = D, damps to offset / (1 + D dt) (without it the offsets drifted to 2 m/s beside
-    // DFG 2D-1's cylinder, where the flow is 0.3); 0 on every other face. A face the surface covers thus carries on
-    // the flux it had as a fluid face (none jumps from the fluid's value to the mirror's as its centre crosses the
-    // surface), and the open part's share alpha of it falls continuously to 0. Set by apply().
+    // boundary, ibm/cut_faces.hpp) with a velocity of its own, alpha (u + offset), u the mirrored value the
+    // neighbours' stencils read. What the open part carries:
+    //   - on a static body, the profile's value at the middle of the open part (its distance from the surface half
+    //     the outer end's): the flow the fluid there has, with nothing carried from step to step. (A flux that
+    //     followed the face's own momentum, damped only by its viscous term, drifted where the wall law leaves that
+    //     term small: the study's block held a quarter cell off the grid lines read +33 % drag; docs/validation.md,
+    //     "Sharp interface", fifth step.)
+    //   - on a moving body, a face that an advancing surface has just covered carries on the flux of its own
+    //     prediction as a fluid face (none jumps from the fluid's value to the mirror's as its centre crosses the
+    //     surface: the moving ripple, third step); from then on that offset relaxes towards the profile's at the
+    //     rate the body crosses the face, |U_x| / h_x + |U_y| / h_y, and the face's viscous rate
+    //     (nu + nu_t)(2 / dx^2 + 2 / dy^2); a face a receding surface uncovers starts from the profile's.
+    // 0 on every other face. Set by apply().
     const Velocity& open_flux() const { return open_flux_; }
     // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
     // null: none. The field must outlive the forcing.
@@ -142,6 +147,8 @@ private:
         double weight2 = 0.0;         // of (u_2 - U_s), u_2 at the second (quadratic profile)
         double image_distance = 0.0;  // L (m)
         bool cut = false;             // ghost faces: a surface crosses it (an end outside, one inside)
+        double open_phi = 0.0;        // cut faces: the distance of the open part's midpoint to the surface
+        double open_weight = 0.0, open_weight2 = 0.0;  // the profile's weights there
     };
     // One component's forced faces: the solid ones, then the forcing ones with their image points' stencils.
     struct Component {
@@ -159,15 +166,17 @@ private:
     // The signed distances to body b of a face's two ends (below on_surface(): negative, as CutFaces counts them).
     std::pair<double, double> end_distances(std::size_t b, bool is_u, int i, int j) const;
     // Ghost faces: the open flux's offsets of the step's cut faces, from their predicted values (before the forcing).
+    // profile: the profile's value at the middle of each forcing face's open part (reconstruction(..., open)).
     void carry_open_flux(const Component& c, bool is_u, const std::vector<double>& predicted, const Field2D& forced,
-                         double dt);
+                         const std::vector<double>& profile, double dt);
     bool inside_any(const Vec2& X) const;
     bool forced(bool is_u, int i, int j) const;  // forcing faces: inside, or beside a face inside
     void classify_component(bool is_u, Component& out) const;
     // The forcing faces' values from the image points (sweeps of the reconstruction); collective.
     void reconstruct(Component& c, bool is_u, Field2D& f, const Field2D& other, int sweeps) const;
     // What the forcing faces' profile gives them from `field` as it is (collective).
-    std::vector<double> reconstruction(const Component& c, bool is_u, const Field2D& field, const Field2D& other) const;
+    std::vector<double> reconstruction(const Component& c, bool is_u, const Field2D& field, const Field2D& other,
+                                       bool open = false) const;
     double target(const ForcedFace& f, bool is_u, const Vec2& at) const;
 
     const Grid& grid_;
