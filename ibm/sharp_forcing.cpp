@@ -357,9 +357,12 @@ void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vec
         const Vec2 h = local_spacing(grid_, f.position);
         const Vec2 U = body.velocity_at(f.surface);
         if (!was_cut.contains(static_cast<long long>(f.j) * stride + f.i)) {
-            // Just cut: by a surface advancing over a fluid face, its own prediction; by one receding from a face
-            // that was inside, the profile's.
-            carried[k] = U.dot(f.normal) > 0.0 ? predicted[k] - forced(f.i, f.j) : to_profile;
+            // Just cut: a face that a surface advancing along its normal covers carries on its own prediction as a
+            // fluid face; one a receding surface uncovers (a ghost's prediction is no flow's), or one on the line of
+            // a side that a corner slides past, starts from the profile. The tolerance keeps a side sliding along
+            // its own line (U . n = 0 but for round-off) on one rule on both sides of a symmetric body.
+            const bool own = U.dot(f.normal) > 1e-6 * U.norm();
+            carried[k] = own ? predicted[k] - forced(f.i, f.j) : to_profile;
             continue;
         }
         // nu + nu_t at the face: the mean of its two cells' eddy viscosity (k-epsilon).

@@ -113,11 +113,12 @@ public:
     //     followed the face's own momentum, damped only by its viscous term, drifted where the wall law leaves that
     //     term small: the study's block held a quarter cell off the grid lines read +33 % drag; docs/validation.md,
     //     "Sharp interface", fifth step.)
-    //   - on a moving body, a face that an advancing surface has just covered carries on the flux of its own
-    //     prediction as a fluid face (none jumps from the fluid's value to the mirror's as its centre crosses the
-    //     surface: the moving ripple, third step); from then on that offset relaxes towards the profile's at the
-    //     rate the body crosses the face, |U_x| / h_x + |U_y| / h_y, and the face's viscous rate
-    //     (nu + nu_t)(2 / dx^2 + 2 / dy^2); a face a receding surface uncovers starts from the profile's.
+    //   - on a moving body, a face that a surface advancing along its normal has just covered carries on the flux
+    //     of its own prediction as a fluid face (none jumps from the fluid's value to the mirror's as its centre
+    //     crosses the surface: the moving ripple, third step); from then on that offset relaxes towards the
+    //     profile's at the rate the body crosses the face, |U_x| / h_x + |U_y| / h_y, and the face's viscous rate
+    //     (nu + nu_t)(2 / dx^2 + 2 / dy^2). A face a receding surface uncovers, or one on a side's line that a
+    //     corner slides past, starts from the profile's (their own prediction put the moving block's drag 2 % low).
     // 0 on every other face. Set by apply().
     const Velocity& open_flux() const { return open_flux_; }
     // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
