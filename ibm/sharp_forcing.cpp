@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -70,7 +71,6 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
     auto position = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
     auto volume = [&](int i, int j) { return is_u ? X.dc(i) * Y.w(j) : X.w(i) * Y.dc(j); };
-    auto key_of = [&](int i, int j) { return static_cast<long long>(j) * (nx + 2 * kGhost) + i; };
 
     // Every body's candidates, then one entry per face: inside a body first, else the nearest surface.
     std::vector<ForcedFace> candidates;
@@ -98,7 +98,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
                 const bool inside = phi < surface;
                 if (ghost_ && !inside) {  // ghost faces: only inside faces, and those the body left since
-                    if (out.inside.contains(key_of(i, j))) {
+                    if (out.inside.contains(face_key(i, j))) {
                         const SurfacePoint s = outline.nearest(body.to_body(p));
                         ForcedFace f{i,   j,   static_cast<int>(b),       volume(i, j),
                                      p,   phi, body.to_world(s.position), body.direction_to_world(s.normal),
@@ -122,7 +122,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     std::unordered_map<long long, std::size_t> chosen;
     std::vector<ForcedFace> faces;
     for (const ForcedFace& f : candidates) {
-        const long long key = key_of(f.i, f.j);
+        const long long key = face_key(f.i, f.j);
         auto [it, fresh] = chosen.try_emplace(key, faces.size());
         if (fresh)
             faces.push_back(f);
@@ -134,7 +134,7 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     out.inside.clear();
     for (const ForcedFace& f : faces) {
         (f.reconstructed ? out.forcing : out.solid).push_back(f);
-        if (ghost_ && !f.fresh) out.inside.insert(key_of(f.i, f.j));
+        if (ghost_ && !f.fresh) out.inside.insert(face_key(f.i, f.j));
     }
 
     // Image points X_s + L n, L = image_cells h_n (h_n the cells' extent along n), at least 4/3 of phi so that the
@@ -159,13 +159,14 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
             f.weight2 = 0.0;
             f.open_weight = f.open_phi / L;
         } else {
-            // Lagrange weights of the quadratic through (0, U_s), (L, u_1), (L2, u_2), at phi.
-            const double L2 = L + hn, y = f.phi;
-            f.weight = y * (L2 - y) / (L * (L2 - L));
-            f.weight2 = -y * (L - y) / (L2 * (L2 - L));
-            const double o = f.open_phi;
-            f.open_weight = o * (L2 - o) / (L * (L2 - L));
-            f.open_weight2 = -o * (L - o) / (L2 * (L2 - L));
+            // Lagrange weights of the quadratic through (0, U_s), (L, u_1), (L2, u_2), at y: at the face (phi) and
+            // at the middle of its open part.
+            const double L2 = L + hn;
+            const auto weights = [&](double y) {
+                return std::pair{y * (L2 - y) / (L * (L2 - L)), -y * (L - y) / (L2 * (L2 - L))};
+            };
+            std::tie(f.weight, f.weight2) = weights(f.phi);
+            std::tie(f.open_weight, f.open_weight2) = weights(f.open_phi);
             mine2.push_back(f.surface + L2 * n);
         }
     }
@@ -201,6 +202,10 @@ std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, 
     const Body& body = bodies_[b];
     const Vec2 second = is_u ? Vec2(X.f(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.f(j));
     return {surface_distance(body, Vec2(X.f(i), Y.f(j)), on_surface(b)), surface_distance(body, second, on_surface(b))};
+}
+
+long long SharpForcing::face_key(int i, int j) const {
+    return static_cast<long long>(j) * (grid_.nx() + 2 * kGhost) + i;
 }
 
 double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? on_surface_tolerance(cell_size_[b]) : 0.0; }
@@ -341,9 +346,8 @@ void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vec
                                    const Field2D& forced, const std::vector<double>& profile, double dt) {
     Field2D& offset = is_u ? open_flux_.u : open_flux_.v;
     std::vector<OffsetFace>& faces = is_u ? offset_u_ : offset_v_;
-    const int stride = grid_.nx() + 2 * kGhost;
     std::unordered_set<long long> was_cut;  // in the last step (the list is in the checkpoint)
-    for (const OffsetFace& f : faces) was_cut.insert(static_cast<long long>(f.j) * stride + f.i);
+    for (const OffsetFace& f : faces) was_cut.insert(face_key(f.i, f.j));
     std::vector<double> carried(c.forcing.size(), 0.0);
     for (std::size_t k = 0; k < c.forcing.size(); ++k) {
         const ForcedFace& f = c.forcing[k];
@@ -356,7 +360,7 @@ void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vec
         }
         const Vec2 h = local_spacing(grid_, f.position);
         const Vec2 U = body.velocity_at(f.surface);
-        if (!was_cut.contains(static_cast<long long>(f.j) * stride + f.i)) {
+        if (!was_cut.contains(face_key(f.i, f.j))) {
             // Just cut: a face that a surface advancing along its normal covers carries on its own prediction as a
             // fluid face; one a receding surface uncovers (a ghost's prediction is no flow's), or one on the line of
             // a side that a corner slides past, starts from the profile. The tolerance keeps a side sliding along

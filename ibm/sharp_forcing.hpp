@@ -164,6 +164,7 @@ private:
     void classify();
     void find_covered_cells();
     double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
+    long long face_key(int i, int j) const;  // a face's key among one component's faces (local indices)
     // The signed distances to body b of a face's two ends (below on_surface(): negative, as CutFaces counts them).
     std::pair<double, double> end_distances(std::size_t b, bool is_u, int i, int j) const;
     // Ghost faces: the open flux's offsets of the step's cut faces, from their predicted values (before the forcing).

@@ -153,8 +153,7 @@ TEST(SharpForcing, StaticCutFacesCarryTheProfileThroughTheirOpenPart) {
                         const Vec2 X =
                             is_u ? Vec2(grid.lx().f(i), grid.ly().c(j)) : Vec2(grid.lx().c(i), grid.ly().f(j));
                         if (std::min({X.x(), X.y(), 1.0 - X.x(), 1.0 - X.y()}) < 4.0 / 40.0) continue;
-                        const Vec2 e0 =
-                            is_u ? Vec2(grid.lx().f(i), grid.ly().f(j)) : Vec2(grid.lx().f(i), grid.ly().f(j));
+                        const Vec2 e0(grid.lx().f(i), grid.ly().f(j));  // the face's first end, both components
                         const Vec2 e1 =
                             is_u ? Vec2(grid.lx().f(i), grid.ly().f(j + 1)) : Vec2(grid.lx().f(i + 1), grid.ly().f(j));
                         const double d0 = outline.signed_distance(e0), d1 = outline.signed_distance(e1);
