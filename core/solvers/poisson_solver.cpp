@@ -52,6 +52,14 @@ HYPRE_Int smg_zero_mean(HYPRE_StructSolver smg, HYPRE_StructMatrix A, HYPRE_Stru
     return 0;
 }
 
+// The cut problem's direct solve with its window (cut_poisson_preconditioner.hpp), then x -= mean(x).
+HYPRE_Int cut_direct_zero_mean(HYPRE_StructSolver handle, HYPRE_StructMatrix, HYPRE_StructVector b,
+                               HYPRE_StructVector x) {
+    reinterpret_cast<CutPoissonPreconditioner*>(handle)->apply(b, x);
+    remove_null_space(handle, x);
+    return 0;
+}
+
 // The preconditioner's setup when its hierarchy is kept (update_coefficients): nothing to do.
 HYPRE_Int keep_hierarchy(HYPRE_StructSolver, HYPRE_StructMatrix, HYPRE_StructVector, HYPRE_StructVector) { return 0; }
 
@@ -126,15 +134,22 @@ void PoissonSolver::destroy_solver() {
         null_spaces().erase(pfmg_);
     }
     if (pcg_) HYPRE_StructPCGDestroy(pcg_);
-    if (pfmg_ && smg_)
+    if (pfmg_ && cut_direct_used_)
+        ;  // the window's preconditioner (cut_direct_) stays: its direct solve is planned once
+    else if (pfmg_ && smg_)
         HYPRE_StructSMGDestroy(pfmg_);
     else if (pfmg_)
         HYPRE_StructPFMGDestroy(pfmg_);
     pcg_ = pfmg_ = nullptr;
+    cut_direct_used_ = false;
 }
 
-// The coefficients of -V laplacian on this rank's cells (5 per cell: diagonal, west, east, south, north).
-std::vector<double> PoissonSolver::matrix_values() const {
+// The coefficients of -V laplacian on this rank's cells (5 per cell: diagonal, west, east, south, north); with_cut
+// false: those of the whole grid, as if no cell were solid and every face open.
+std::vector<double> PoissonSolver::matrix_values(bool with_cut) const {
+    const Field2D* fluid_ = with_cut ? this->fluid_ : nullptr;
+    const Field2D* aperture_u_ = with_cut ? this->aperture_u_ : nullptr;
+    const Field2D* aperture_v_ = with_cut ? this->aperture_v_ : nullptr;
     const auto& X = grid_.lx();
     const auto& Y = grid_.ly();
     const int nx = grid_.nx(), ny = grid_.ny();
@@ -196,7 +211,8 @@ HYPRE_StructMatrix PoissonSolver::new_matrix() const {
 
 // This rank's coefficients (matrix_values) into `m`, assembled.
 void PoissonSolver::set_values(HYPRE_StructMatrix m) const {
-    std::vector<double> values = matrix_values();
+    values_ = matrix_values();
+    std::vector<double>& values = values_;
     int entries[5] = {0, 1, 2, 3, 4};
     std::array<int, 2> lower = lower_, upper = upper_;  // hypre takes them non-const
     HYPRE_StructMatrixSetBoxValues(m, lower.data(), upper.data(), 5, entries, values.data());
@@ -209,6 +225,10 @@ void PoissonSolver::set_values(HYPRE_StructMatrix m) const {
 // keeps data derived from the fine matrix.)
 void PoissonSolver::update_coefficients() {
     if (direct_ && DirectPoissonSolver::transform_axis(grid_) == direct_->axis()) return direct_->update_lines();
+    if (cut_direct_used_) {
+        cut_direct_.reset();  // the lines moved: the whole grid's direct solve and coefficients are made again
+        return update_matrix();
+    }
     if (!matrix_ || !pcg_ || direct_) return update_matrix();
     NullSpace& ns = null_spaces().at(pfmg_);
     if (ns.hierarchy_matrix) {
@@ -221,6 +241,10 @@ void PoissonSolver::update_coefficients() {
     matrix_ = new_matrix();
     HYPRE_StructPCGSetPrecond(pcg_, smg_ ? smg_zero_mean : pfmg_zero_mean, keep_hierarchy, pfmg_);
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
+}
+
+bool PoissonSolver::cut_direct_applies() const {
+    return method_ == PoissonMethod::automatic && aperture_u_ && DirectPoissonSolver::transform_axis(grid_) >= 0;
 }
 
 bool PoissonSolver::direct_applies() const {
@@ -244,6 +268,24 @@ void PoissonSolver::update_matrix() {
     HYPRE_StructPCGSetTwoNorm(pcg_, 1);  // stop on the true relative residual (STACK.md)
     HYPRE_StructPCGSetRelChange(pcg_, 0);
     smg_ = solid_cells_ > 0.0 && !grid_.x_axis().periodic() && !grid_.y_axis().periodic();
+    if (cut_direct_applies()) {
+        // A surface cuts the problem on a grid the direct solve fits: keep it, with the window's exact solve
+        // (cut_poisson_preconditioner.hpp); multigrid only where the window would not pay.
+        if (!cut_direct_) {
+            cut_direct_ = std::make_unique<CutPoissonPreconditioner>(grid_, hgrid_, dirichlet_, kCutWindowMargin);
+            whole_values_ = matrix_values(false);
+        }
+        if (cut_direct_->set_up(values_, whole_values_, matrix_)) {
+            cut_direct_used_ = true;
+            pfmg_ = reinterpret_cast<HYPRE_StructSolver>(cut_direct_.get());
+            null_spaces()[pfmg_] = NullSpace{singular_ ? ones_ : nullptr, singular_ ? fluid_cells_ : 0.0};
+            HYPRE_StructPCGSetPrecond(pcg_, cut_direct_zero_mean, keep_hierarchy, pfmg_);
+            HYPRE_StructVectorAssemble(b_);
+            HYPRE_StructVectorAssemble(x_);
+            HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
+            return;
+        }
+    }
     if (smg_) {
         // Measured (2026-11-24), not understood yet: with the solid cells' identity rows PFMG took 50 iterations
         // or broke down at the first (a square at the centre or a quarter above it in a 128 x 64 channel with

@@ -16,12 +16,15 @@
 // like a Laplacian row there) with a zero right-hand side, and no flux crosses their sides (Neumann); the null
 // space and the means are the fluid cells'. With solid cells on a grid with no periodic direction the
 // preconditioner is SMG instead of PFMG (update_matrix() says why).
+// Cut along sharp surfaces (face apertures) on a grid with a uniform axis, the preconditioner is instead the whole
+// grid's direct solve with an exact solve in a window around the cut cells (cut_poisson_preconditioner.hpp).
 #include <HYPRE_struct_ls.h>
 
 #include <array>
 #include <memory>
 #include <vector>
 
+#include "cut_poisson_preconditioner.hpp"
 #include "direct_poisson.hpp"
 #include "field.hpp"
 #include "poisson_method.hpp"
@@ -61,14 +64,21 @@ public:
     PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
     bool singular() const { return singular_; }
     bool direct() const { return direct_ != nullptr; }
+    // Cut along surfaces, PCG preconditioned by the direct solve and a window's (cut_poisson_preconditioner.hpp).
+    bool cut_direct() const { return cut_direct_used_; }
 
 private:
     void destroy_solver();
-    std::vector<double> matrix_values() const;
+    std::vector<double> matrix_values(bool with_cut = true) const;
     HYPRE_StructMatrix new_matrix() const;
     void set_values(HYPRE_StructMatrix m) const;
 
     bool direct_applies() const;
+    bool cut_direct_applies() const;
+    // Cells around the cut ones in the window of cut_direct_. The study's free fall on ghost faces (1 rank, t = 0-0.3):
+    // margin 4 / 8 / 16 / 24 took 6.0 / 5.0 / 3.9 / 3.1 PCG iterations per step, 16 the shortest step (a window of
+    // about 2900 cells around the block 20 cells across; docs/performance.md).
+    static constexpr int kCutWindowMargin = 16;
 
     const Grid& grid_;
     std::array<bool, 4> dirichlet_;
@@ -90,6 +100,12 @@ private:
     double fluid_cells_ = 0.0;  // global count of fluid cells
     double solid_cells_ = 0.0;  // and of solid ones
     bool smg_ = false;          // the preconditioner (pfmg_) is SMG: there are solid cells
+    // With face apertures on a grid with a uniform axis: the direct solve with a window's exact solve around the
+    // surfaces preconditions PCG (pfmg_ is then this object's handle).
+    std::unique_ptr<CutPoissonPreconditioner> cut_direct_;
+    bool cut_direct_used_ = false;
+    std::vector<double> whole_values_;    // the whole grid's coefficients (matrix_values(false)), for cut_direct_
+    mutable std::vector<double> values_;  // the coefficients set_values() gave the matrix last
     std::array<int, 2> lower_{}, upper_{};
 };
 

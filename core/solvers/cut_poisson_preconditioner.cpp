@@ -1,0 +1,173 @@
+#include "cut_poisson_preconditioner.hpp"
+
+#include <HYPRE_struct_mv.h>
+#include <mpi.h>
+
+#include <algorithm>
+
+namespace chute {
+
+CutPoissonPreconditioner::CutPoissonPreconditioner(const Grid& grid, HYPRE_StructGrid hypre_grid,
+                                                   std::array<bool, 4> dirichlet_sides, int margin)
+    : grid_(grid), margin_(margin), direct_(grid, dirichlet_sides), source_(grid), correction_(grid) {
+    lower_ = {grid_.lx().offset, grid_.ly().offset};
+    upper_ = {grid_.lx().offset + grid_.nx() - 1, grid_.ly().offset + grid_.ny() - 1};
+    for (HYPRE_StructVector* v : {&x_, &y_}) {
+        HYPRE_StructVectorCreate(grid_.comm(), hypre_grid, v);
+        HYPRE_StructVectorInitialize(*v);
+        HYPRE_StructVectorAssemble(*v);
+    }
+    const std::size_t n = static_cast<std::size_t>(grid_.nx()) * grid_.ny();
+    volume_.resize(n);
+    rhs_.resize(n);
+    z_.resize(n);
+    r_.resize(n);
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i)
+            volume_[static_cast<std::size_t>(j) * grid_.nx() + i] = grid_.lx().w(i) * grid_.ly().w(j);
+}
+
+CutPoissonPreconditioner::~CutPoissonPreconditioner() {
+    HYPRE_StructVectorDestroy(x_);
+    HYPRE_StructVectorDestroy(y_);
+}
+
+bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std::vector<double>& whole,
+                                      HYPRE_StructMatrix A) {
+    matrix_ = A;
+    const int nx = grid_.nx(), ny = grid_.ny();
+    const int gnx = grid_.global_nx(), gny = grid_.global_ny();
+    const int ox = grid_.lx().offset, oy = grid_.ly().offset;
+    const bool px = grid_.x_axis().periodic(), py = grid_.y_axis().periodic();
+
+    // The cells whose rows the surfaces changed, from every rank.
+    std::vector<long long> changed;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const std::size_t c = 5 * (static_cast<std::size_t>(j) * nx + i);
+            if (!std::equal(cut.begin() + c, cut.begin() + c + 5, whole.begin() + c))
+                changed.push_back(static_cast<long long>(j + oy) * gnx + (i + ox));
+        }
+    const int count = static_cast<int>(changed.size());
+    std::vector<int> counts(grid_.size()), offsets(grid_.size(), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, grid_.comm());
+    for (int r = 1; r < grid_.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    std::vector<long long> all(static_cast<std::size_t>(offsets.back() + counts.back()));
+    MPI_Allgatherv(changed.data(), count, MPI_LONG_LONG, all.data(), counts.data(), offsets.data(), MPI_LONG_LONG,
+                   grid_.comm());
+
+    // The window: those cells and `margin` cells around them (a square of them: the coupling decays alike along
+    // both axes), wrapped across periodic sides; marked in their bounding box (the whole axis if periodic), row-wise
+    // then column-wise.
+    if (all.empty()) return false;
+    int i0 = gnx, i1 = -1, j0 = gny, j1 = -1;
+    for (long long c : all) {
+        const int i = static_cast<int>(c % gnx), j = static_cast<int>(c / gnx);
+        i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+    }
+    i0 = px ? 0 : std::max(0, i0 - margin_), i1 = px ? gnx - 1 : std::min(gnx - 1, i1 + margin_);
+    j0 = py ? 0 : std::max(0, j0 - margin_), j1 = py ? gny - 1 : std::min(gny - 1, j1 + margin_);
+    const int bw = i1 - i0 + 1, bh = j1 - j0 + 1;
+    auto at = [&](int i, int j) { return static_cast<std::size_t>(j - j0) * bw + (i - i0); };
+    auto wrap = [](int k, int n, bool periodic) { return periodic ? (k + n) % n : k; };
+    std::vector<char> rows(static_cast<std::size_t>(bw) * bh, 0), marked(rows.size(), 0);
+    for (long long c : all) {
+        const int ci = static_cast<int>(c % gnx), j = static_cast<int>(c / gnx);
+        for (int d = -margin_; d <= margin_; ++d)
+            if (const int i = wrap(ci + d, gnx, px); i >= i0 && i <= i1) rows[at(i, j)] = 1;
+    }
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+            if (rows[at(i, j)])
+                for (int d = -margin_; d <= margin_; ++d)
+                    if (const int k = wrap(j + d, gny, py); k >= j0 && k <= j1) marked[at(i, k)] = 1;
+    std::vector<int> index(marked.size(), -1);  // per bounding-box cell: its place in the window, or -1
+    window_.clear();
+    local_.clear();
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            if (!marked[at(i, j)]) continue;
+            index[at(i, j)] = static_cast<int>(window_.size());
+            window_.push_back(static_cast<long long>(j) * gnx + i);
+            const int li = i - ox, lj = j - oy;
+            local_.push_back(li >= 0 && lj >= 0 && li < nx && lj < ny ? lj * nx + li : -1);
+        }
+    if (4 * window_.size() > static_cast<std::size_t>(gnx) * gny) return false;
+
+    // The window's rows of the cut matrix, neighbours outside it dropped (zero there).
+    std::vector<double> owned(5 * window_.size(), 0.0);
+    for (std::size_t k = 0; k < window_.size(); ++k)
+        if (local_[k] >= 0)
+            std::copy_n(cut.begin() + 5 * static_cast<std::size_t>(local_[k]), 5, owned.begin() + 5 * k);
+    MPI_Allreduce(MPI_IN_PLACE, owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    std::vector<Eigen::Triplet<double>> entries;
+    const int steps[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // west, east, south, north
+    for (std::size_t k = 0; k < window_.size(); ++k) {
+        const int ci = static_cast<int>(window_[k] % gnx), cj = static_cast<int>(window_[k] / gnx);
+        entries.emplace_back(static_cast<int>(k), static_cast<int>(k), owned[5 * k]);
+        for (int e = 0; e < 4; ++e) {
+            const double a = owned[5 * k + 1 + e];
+            if (a == 0.0) continue;
+            int i = ci + steps[e][0], j = cj + steps[e][1];
+            if (px) i = (i + gnx) % gnx;
+            if (py) j = (j + gny) % gny;
+            if (i < i0 || j < j0 || i > i1 || j > j1) continue;
+            const int m = index[at(i, j)];
+            if (m >= 0) entries.emplace_back(static_cast<int>(k), m, a);
+        }
+    }
+    Eigen::SparseMatrix<double> block(static_cast<Eigen::Index>(window_.size()),
+                                      static_cast<Eigen::Index>(window_.size()));
+    block.setFromTriplets(entries.begin(), entries.end());
+    factor_.compute(block);
+    return factor_.info() == Eigen::Success;
+}
+
+const std::vector<double>& CutPoissonPreconditioner::window_values(const std::vector<double>& owned) {
+    std::vector<double>& values = window_buffer_;
+    values.assign(window_.size(), 0.0);
+    for (std::size_t k = 0; k < window_.size(); ++k)
+        if (local_[k] >= 0) values[k] = owned[static_cast<std::size_t>(local_[k])];
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    return values;
+}
+
+void CutPoissonPreconditioner::add_window_solve(const std::vector<double>& r, std::vector<double>& x) {
+    const std::vector<double>& rw = window_values(r);
+    const Eigen::VectorXd z = factor_.solve(Eigen::Map<const Eigen::VectorXd>(rw.data(), rw.size()));
+    for (std::size_t k = 0; k < window_.size(); ++k)
+        if (local_[k] >= 0) x[static_cast<std::size_t>(local_[k])] += z[static_cast<Eigen::Index>(k)];
+}
+
+void CutPoissonPreconditioner::residual(const std::vector<double>& b, const std::vector<double>& x,
+                                        std::vector<double>& r) {
+    HYPRE_StructVectorSetBoxValues(x_, lower_.data(), upper_.data(), const_cast<double*>(x.data()));
+    HYPRE_StructVectorAssemble(x_);
+    HYPRE_StructMatrixMatvec(1.0, matrix_, x_, 0.0, y_);
+    HYPRE_StructVectorGetBoxValues(y_, lower_.data(), upper_.data(), r.data());
+    for (std::size_t c = 0; c < r.size(); ++c) r[c] = b[c] - r[c];
+}
+
+void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x) {
+    const int nx = grid_.nx(), ny = grid_.ny();
+    std::vector<double>&rhs = rhs_, &z = z_, &r = r_;
+    std::fill(z.begin(), z.end(), 0.0);
+    HYPRE_StructVectorGetBoxValues(b, lower_.data(), upper_.data(), rhs.data());
+    add_window_solve(rhs, z);
+    // The whole grid: L^-1 of the residual. The matrix is -V laplacian, so the direct solve's source is -r / V.
+    residual(rhs, z, r);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const std::size_t c = static_cast<std::size_t>(j) * nx + i;
+            source_(i, j) = -r[c] / volume_[c];
+        }
+    direct_.solve(source_, correction_);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) z[static_cast<std::size_t>(j) * nx + i] += correction_(i, j);
+    residual(rhs, z, r);
+    add_window_solve(r, z);
+    HYPRE_StructVectorSetBoxValues(x, lower_.data(), upper_.data(), z.data());
+    HYPRE_StructVectorAssemble(x);
+}
+
+}  // namespace chute
