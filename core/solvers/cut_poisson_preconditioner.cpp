@@ -101,6 +101,7 @@ bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std:
             std::copy_n(cut.begin() + 5 * static_cast<std::size_t>(local_[k]), 5, owned.begin() + 5 * k);
     MPI_Allreduce(MPI_IN_PLACE, owned.data(), static_cast<int>(owned.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
     std::vector<Eigen::Triplet<double>> entries;
+    ring_.clear();
     const int steps[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // west, east, south, north
     for (std::size_t k = 0; k < window_.size(); ++k) {
         const int ci = static_cast<int>(window_[k] % gnx), cj = static_cast<int>(window_[k] / gnx);
@@ -111,9 +112,13 @@ bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std:
             int i = ci + steps[e][0], j = cj + steps[e][1];
             if (px) i = (i + gnx) % gnx;
             if (py) j = (j + gny) % gny;
-            if (i < i0 || j < j0 || i > i1 || j > j1) continue;
-            const int m = index[at(i, j)];
-            if (m >= 0) entries.emplace_back(static_cast<int>(k), m, a);
+            if (i < 0 || j < 0 || i >= gnx || j >= gny) continue;
+            const int m = i < i0 || j < j0 || i > i1 || j > j1 ? -1 : index[at(i, j)];
+            if (m >= 0) {
+                entries.emplace_back(static_cast<int>(k), m, a);
+            } else if (const int li = i - ox, lj = j - oy; li >= 0 && lj >= 0 && li < nx && lj < ny) {
+                ring_.push_back({static_cast<int>(k), lj * nx + li, a});  // the matrix is symmetric
+            }
         }
     }
     Eigen::SparseMatrix<double> block(static_cast<Eigen::Index>(window_.size()),
@@ -132,9 +137,14 @@ const std::vector<double>& CutPoissonPreconditioner::window_values(const std::ve
     return values;
 }
 
+const Eigen::VectorXd& CutPoissonPreconditioner::window_solve(const std::vector<double>& rw) {
+    window_solution_ =
+        factor_.solve(Eigen::Map<const Eigen::VectorXd>(rw.data(), static_cast<Eigen::Index>(rw.size())));
+    return window_solution_;
+}
+
 void CutPoissonPreconditioner::add_window_solve(const std::vector<double>& r, std::vector<double>& x) {
-    const std::vector<double>& rw = window_values(r);
-    const Eigen::VectorXd z = factor_.solve(Eigen::Map<const Eigen::VectorXd>(rw.data(), rw.size()));
+    const Eigen::VectorXd& z = window_solve(window_values(r));
     for (std::size_t k = 0; k < window_.size(); ++k)
         if (local_[k] >= 0) x[static_cast<std::size_t>(local_[k])] += z[static_cast<Eigen::Index>(k)];
 }
@@ -153,9 +163,15 @@ void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x)
     std::vector<double>&rhs = rhs_, &z = z_, &r = r_;
     std::fill(z.begin(), z.end(), 0.0);
     HYPRE_StructVectorGetBoxValues(b, lower_.data(), upper_.data(), rhs.data());
-    add_window_solve(rhs, z);
+    // The window's solve leaves no residual inside the window; outside, its cells' values reach the next cells only.
+    const Eigen::VectorXd& zw = window_solve(window_values(rhs));
+    for (std::size_t k = 0; k < window_.size(); ++k)
+        if (local_[k] >= 0) z[static_cast<std::size_t>(local_[k])] = zw[static_cast<Eigen::Index>(k)];
+    r = rhs;
+    for (std::size_t k = 0; k < window_.size(); ++k)
+        if (local_[k] >= 0) r[static_cast<std::size_t>(local_[k])] = 0.0;
+    for (const RingCoupling& c : ring_) r[static_cast<std::size_t>(c.cell)] -= c.coefficient * zw[c.window_cell];
     // The whole grid: L^-1 of the residual. The matrix is -V laplacian, so the direct solve's source is -r / V.
-    residual(rhs, z, r);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             const std::size_t c = static_cast<std::size_t>(j) * nx + i;

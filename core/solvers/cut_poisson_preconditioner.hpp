@@ -27,7 +27,8 @@ namespace chute {
 
 class CutPoissonPreconditioner {
 public:
-    CutPoissonPreconditioner(const Grid& grid, HYPRE_StructGrid hypre_grid, std::array<bool, 4> dirichlet_sides, int margin);
+    CutPoissonPreconditioner(const Grid& grid, HYPRE_StructGrid hypre_grid, std::array<bool, 4> dirichlet_sides,
+                             int margin);
     ~CutPoissonPreconditioner();
     CutPoissonPreconditioner(const CutPoissonPreconditioner&) = delete;
     CutPoissonPreconditioner& operator=(const CutPoissonPreconditioner&) = delete;
@@ -45,6 +46,7 @@ public:
 
 private:
     const std::vector<double>& window_values(const std::vector<double>& owned);  // gathered over the ranks
+    const Eigen::VectorXd& window_solve(const std::vector<double>& window_residual);
     void add_window_solve(const std::vector<double>& residual, std::vector<double>& x);
     void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r);
 
@@ -57,10 +59,19 @@ private:
     std::vector<long long> window_;  // global cell indices (j * global_nx + i), ascending, the same on every rank
     std::vector<int> local_;         // per window cell: its index in this rank's box, or -1
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+    Eigen::VectorXd window_solution_;
+    // The couplings from the window's cells to this rank's cells just outside it: what a solution in the window
+    // leaves in their residual (apply()'s first residual without a matrix product).
+    struct RingCoupling {
+        int window_cell;
+        int cell;  // in this rank's box
+        double coefficient;
+    };
+    std::vector<RingCoupling> ring_;
     Field2D source_, correction_;
-    std::vector<double> volume_;          // of each owned cell
-    std::vector<double> rhs_, z_, r_;     // apply()'s work, per owned cell
-    std::vector<double> window_buffer_;   // window_values()'s
+    std::vector<double> volume_;         // of each owned cell
+    std::vector<double> rhs_, z_, r_;    // apply()'s work, per owned cell
+    std::vector<double> window_buffer_;  // window_values()'s
 };
 
 }  // namespace chute

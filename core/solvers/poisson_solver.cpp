@@ -253,6 +253,14 @@ bool PoissonSolver::direct_applies() const {
 }
 
 void PoissonSolver::update_matrix() {
+    // Cut along a moving surface the matrix changes every step, its grid and stencil do not: the new values in place
+    // and the window made again; PCG's vectors and its matrix product's communication stay valid (as in
+    // update_coefficients()).
+    if (cut_direct_used_ && matrix_ && pcg_ && cut_direct_applies()) {
+        set_values(matrix_);
+        null_spaces().at(pfmg_).cells = singular_ ? fluid_cells_ : 0.0;
+        if (cut_direct_->set_up(values_, whole_values_, matrix_)) return;
+    }
     destroy_solver();
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
     matrix_ = nullptr;
