@@ -83,6 +83,7 @@ chute_validation(free_fall_block_k_epsilon Turbulence.StudyBlockFallsAtTheExperi
 chute_validation(free_fall_block_window Turbulence.StudyBlockFallsAlikeInAWindowThatFollowsIt 2 "validation;slow")
 chute_validation(free_fall_block_body_fitted Turbulence.StudyBlockFallsBodyFittedConverged 2 "validation;slow")
 chute_validation(free_fall_block_body_fitted_layers Turbulence.StudyBlockFallsAlikeWithLayersAndATranslatingGrid 2 "validation;slow")
+chute_validation(free_fall_block_sharp Turbulence.StudyBlockFallsOnTheSharpCarrierAsBodyFitted 2 "validation;slow")
 chute_validation(slope_runout_water_air Turbulence.SlopeRunoutInWaterIsShorterThanInAir 2 "validation;slow")
 chute_validation(slope_runout_both_modes Turbulence.StudySlopeRunoutAgreesInBothModes 2 "validation;slow")
 chute_validation(bed_cushion_body_fitted Turbulence.StudyBlockOnTheBedIsCushionedByTheSqueezedWater 2 "validation;slow")
