@@ -134,12 +134,13 @@ void PoissonSolver::destroy_solver() {
         null_spaces().erase(pfmg_);
     }
     if (pcg_) HYPRE_StructPCGDestroy(pcg_);
-    if (pfmg_ && cut_direct_used_)
-        ;  // the window's preconditioner (cut_direct_) stays: its direct solve is planned once
-    else if (pfmg_ && smg_)
-        HYPRE_StructSMGDestroy(pfmg_);
-    else if (pfmg_)
-        HYPRE_StructPFMGDestroy(pfmg_);
+    // The window's preconditioner (cut_direct_) is not hypre's: it stays, its direct solve planned once.
+    if (pfmg_ && !cut_direct_used_) {
+        if (smg_)
+            HYPRE_StructSMGDestroy(pfmg_);
+        else
+            HYPRE_StructPFMGDestroy(pfmg_);
+    }
     pcg_ = pfmg_ = nullptr;
     cut_direct_used_ = false;
 }
@@ -226,7 +227,10 @@ void PoissonSolver::set_values(HYPRE_StructMatrix m) const {
 void PoissonSolver::update_coefficients() {
     if (direct_ && DirectPoissonSolver::transform_axis(grid_) == direct_->axis()) return direct_->update_lines();
     if (cut_direct_used_) {
-        cut_direct_.reset();  // the lines moved: the whole grid's direct solve and coefficients are made again
+        // The lines moved: the whole grid's direct solve and coefficients are made again (the solver first, so that
+        // update_matrix() does not set the values in place on the old preconditioner).
+        destroy_solver();
+        cut_direct_.reset();
         return update_matrix();
     }
     if (!matrix_ || !pcg_ || direct_) return update_matrix();
