@@ -59,6 +59,7 @@ public:
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
     std::optional<Eigen::Matrix2d> added_mass(std::size_t b) const override;
     void body_moved(std::size_t b, double dt) override;
+    bool measure_holds_impulse(std::size_t) const override { return false; }
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
 
     void locate_walls() override {}

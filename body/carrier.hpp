@@ -68,10 +68,14 @@ public:
     // the step gives the slope as the body's added mass M over the step (kg, x and y: the force changes by
     // -M da when the body's acceleration over the step changes by da), and after the body's update
     // body_moved(b, dt) moves the flow and the grid to the body's final motion, so that the update solved with M
-    // is the converged one (rigidbody/free_bodies.hpp). Null: the carrier does not (the immersed boundary, whose
-    // free bodies take a virtual mass and passes instead).
+    // is the converged one (rigidbody/free_bodies.hpp). Null: the carrier does not (the diffuse immersed boundary,
+    // whose free bodies take a virtual mass and passes instead).
     virtual std::optional<Eigen::Matrix2d> added_mass(std::size_t) const { return std::nullopt; }
     virtual void body_moved(std::size_t, double) {}
+    // Whether measure()'s force (a) on body b holds the water's impulse of an impact step (the wrench of the step,
+    // as the immersed boundary's is), which the record then takes out (run/step.cpp, measure_forces); false for a
+    // carrier that measures after body_moved() brought the water to the body's final velocity (body-fitted).
+    virtual bool measure_holds_impulse(std::size_t) const { return true; }
     // p is the kinematic pressure (p / rho) the flow solver holds.
     virtual std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p,
                                             const WallTurbulence* turbulence) = 0;

@@ -259,6 +259,33 @@ FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const Hole
     return r;
 }
 
+FlowSolver::HoleResponse FlowSolver::cut_response(const std::array<Velocity, 2>& shut_velocity,
+                                                  const HoleResponse* previous, std::array<bool, 2> along) {
+    if (!cut_.cells) throw std::logic_error("FlowSolver::cut_response: no pressure boundary is set");
+    HoleResponse r{{Velocity(*grid_), Velocity(*grid_)}, {Field2D(*grid_), Field2D(*grid_)}};
+    const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
+    for (int k = 0; k < 2; ++k) {
+        if (!along[k]) continue;
+        // The flux through the shut parts alone: the fluid at rest, the surfaces moving at shut_velocity[k].
+        Velocity flux(*grid_);
+        for (int j = 0; j < grid_->ny(); ++j)
+            for (int i = 0; i <= grid_->nx(); ++i) flux.u(i, j) = (1.0 - au(i, j)) * shut_velocity[k].u(i, j);
+        for (int j = 0; j <= grid_->ny(); ++j)
+            for (int i = 0; i < grid_->nx(); ++i) flux.v(i, j) = (1.0 - av(i, j)) * shut_velocity[k].v(i, j);
+        divergence(*grid_, flux, 1.0, source_);
+        Field2D phi = previous ? previous->pressure[k] : Field2D(*grid_);
+        poisson_->solve(source_, phi, poisson_residual_floor(flux, 1.0));
+        halo_->exchange(phi);
+        bc_->apply_pressure(phi);
+        Velocity v(*grid_);
+        subtract_pressure_gradient(*grid_, *bc_, phi, 1.0, v, cut_.aperture_u, cut_.aperture_v);
+        halo_->exchange(v);
+        r.velocity[k] = std::move(v);
+        r.pressure[k] = std::move(phi);
+    }
+    return r;
+}
+
 void FlowSolver::add_hole_response(const HoleResponse& r, std::array<double, 2> change, double dt) {
     for (int j = -kGhost; j < grid_->ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_->nx() + kGhost; ++i) {

@@ -155,6 +155,14 @@ public:
     // The step's u^{n+1} and p^{n+1/2} changed by the response to dU = `change`, the solid cells already holding
     // the block's new velocity (their faces are filled from it). Collective.
     void add_hole_response(const HoleResponse& response, std::array<double, 2> change, double dt);
+    // The same response for a body that a sharp surface cuts into the pressure problem (set_pressure_boundary): the
+    // shut parts of the faces moving at shut_velocity[k] (body b's faces at e_k, every other face 0: a field from
+    // CutFaces::shut_velocity), the fluid at rest: pressure[k] = phi_k with laplacian(phi_k) the divergence of
+    // A (1 - alpha) shut_velocity[k] and velocity[k] = -grad phi_k on the faces the projection corrects (alpha > 0).
+    // add_hole_response() adds it. Linear in U_b as the projection is, with the matrix of the step's projection.
+    // `previous`: the solves' starting guess; `along`: the directions to solve for. Collective.
+    HoleResponse cut_response(const std::array<Velocity, 2>& shut_velocity, const HoleResponse* previous = nullptr,
+                              std::array<bool, 2> along = {true, true});
     // The sum over a solid block's faces of V grad(q) (m^3 times q's unit per metre): the pressure part of
     // solid_momentum_rate for a field q. Collective.
     std::array<double, 2> solid_gradient_sum(const SolidBlock& block, const Field2D& q) const;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <mpi.h>
+
 #include "direct_forcing.hpp"  // min_spacing_along
 
 namespace chute {
@@ -14,7 +16,11 @@ CutFaces::CutFaces(const Grid& grid, const std::vector<Body>& bodies)
       aperture_u_(grid, 1.0),
       aperture_v_(grid, 1.0),
       open_(grid, 1.0),
-      body_velocity_(grid) {}
+      body_velocity_(grid),
+      owner_u_(grid, -1.0),
+      owner_v_(grid, -1.0),
+      shut_middle_u_(grid, 0.5),
+      shut_middle_v_(grid, 0.5) {}
 
 double surface_distance(const Body& body, const Vec2& point, double tolerance) {
     const double d = body.outline().signed_distance(body.to_body(point));
@@ -72,8 +78,12 @@ bool CutFaces::update() {
     aperture_v_.fill(1.0);
     body_velocity_.u.fill(0.0);
     body_velocity_.v.fill(0.0);
+    owner_u_.fill(-1.0);
+    owner_v_.fill(-1.0);
+    shut_middle_u_.fill(0.5);
+    shut_middle_v_.fill(0.5);
     // The ends' corners (i, j) and (i, j + 1) for a u face, (i, j) and (i + 1, j) for a v face.
-    auto face = [&](Field2D& alpha, Field2D& U, bool is_u, int i, int j) {
+    auto face = [&](Field2D& alpha, Field2D& U, Field2D& by, Field2D& middle, bool is_u, int i, int j) {
         const int i2 = is_u ? i : i + 1, j2 = is_u ? j + 1 : j;
         const double pa = phi[at(i, j)], pb = phi[at(i2, j2)];
         if (pa >= 0.0 && pb >= 0.0) return;  // open (alpha 1, from the fill)
@@ -85,15 +95,18 @@ bool CutFaces::update() {
             const double tolerance = on_surface_tolerance(min_spacing_along(grid_, bodies_[body]));
             alpha(i, j) = pa >= 0.0 ? open_fraction(bodies_[body], A, B, tolerance)
                                     : open_fraction(bodies_[body], B, A, tolerance);
+            // The shut part runs from the inside end over 1 - alpha of the face.
+            middle(i, j) = pa >= 0.0 ? 1.0 - 0.5 * (1.0 - alpha(i, j)) : 0.5 * (1.0 - alpha(i, j));
         }
+        by(i, j) = body;
         const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
         const Vec2 v = bodies_[body].velocity_at(p);
         U(i, j) = is_u ? v.x() : v.y();
     };
     for (int j = -1; j <= ny; ++j)
-        for (int i = -1; i <= nx + 1; ++i) face(aperture_u_, body_velocity_.u, true, i, j);
+        for (int i = -1; i <= nx + 1; ++i) face(aperture_u_, body_velocity_.u, owner_u_, shut_middle_u_, true, i, j);
     for (int j = -1; j <= ny + 1; ++j)
-        for (int i = -1; i <= nx; ++i) face(aperture_v_, body_velocity_.v, false, i, j);
+        for (int i = -1; i <= nx; ++i) face(aperture_v_, body_velocity_.v, owner_v_, shut_middle_v_, false, i, j);
     for (int j = -1; j <= ny; ++j)
         for (int i = -1; i <= nx; ++i)
             open_(i, j) = aperture_u_(i, j) > 0.0 || aperture_u_(i + 1, j) > 0.0 || aperture_v_(i, j) > 0.0 ||
@@ -101,6 +114,64 @@ bool CutFaces::update() {
                               ? 1.0
                               : 0.0;
     return true;
+}
+
+Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U) const {
+    Velocity out(grid_);
+    const auto body = static_cast<double>(b);
+    for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
+            if (owner_u_(i, j) == body) out.u(i, j) = U.x();
+            if (owner_v_(i, j) == body) out.v(i, j) = U.y();
+        }
+    return out;
+}
+
+void CutFaces::add_shut_velocity(std::size_t b, const Vec2& dU) {
+    const auto body = static_cast<double>(b);
+    for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
+        for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
+            if (owner_u_(i, j) == body) body_velocity_.u(i, j) += dU.x();
+            if (owner_v_(i, j) == body) body_velocity_.v(i, j) += dU.y();
+        }
+}
+
+std::vector<Wrench> CutFaces::pressure_wrenches(const Field2D& q, double density, double depth) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    std::vector<double> sums(3 * bodies_.size(), 0.0);  // force x, y and moment per body
+    // Face (i, j) of a cell with pressure qc, its outward normal n (+-1 along its axis).
+    auto add = [&](double qc, bool is_u, int i, int j, double n) {
+        const Field2D& by = is_u ? owner_u_ : owner_v_;
+        if (by(i, j) < 0.0) return;
+        const double shut = 1.0 - (is_u ? aperture_u_ : aperture_v_)(i, j);
+        if (shut <= 0.0) return;
+        const auto b = static_cast<std::size_t>(by(i, j));
+        const double middle = (is_u ? shut_middle_u_ : shut_middle_v_)(i, j);
+        const Vec2 at = is_u ? Vec2(X.f(i), Y.f(j) + middle * Y.w(j)) : Vec2(X.f(i) + middle * X.w(i), Y.f(j));
+        const double amount = qc * shut * (is_u ? Y.w(j) : X.w(i)) * n;
+        const Vec2 f = is_u ? Vec2(amount, 0.0) : Vec2(0.0, amount);
+        sums[3 * b] += f.x();
+        sums[3 * b + 1] += f.y();
+        sums[3 * b + 2] += cross(at - bodies_[b].state().centre, f);
+    };
+    for (int j = 0; j < grid_.ny(); ++j)
+        for (int i = 0; i < grid_.nx(); ++i) {
+            if (open_(i, j) == 0.0) continue;
+            const double qc = q(i, j);
+            add(qc, true, i, j, -1.0);
+            add(qc, true, i + 1, j, 1.0);
+            add(qc, false, i, j, -1.0);
+            add(qc, false, i, j + 1, 1.0);
+        }
+    if (grid_.size() > 1)
+        MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    std::vector<Wrench> out(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        out[b].force = density * depth * Vec2(sums[3 * b], sums[3 * b + 1]);
+        out[b].torque = density * depth * sums[3 * b + 2];
+    }
+    return out;
 }
 
 }  // namespace chute

@@ -19,6 +19,7 @@
 
 #include "body.hpp"
 #include "field.hpp"
+#include "rigid_body.hpp"  // Wrench
 
 namespace chute {
 
@@ -43,11 +44,30 @@ public:
     const Velocity& body_velocity() const { return body_velocity_; }  // U_b on the cut and shut faces, else 0
     const Field2D& open_cells() const { return open_; }               // 1: a face of the cell is open
 
+    // The force and moment about each body's centre that a cell pressure q (kinematic, as FlowSolver holds p)
+    // exerts on the bodies through the shut parts of the cut cells' faces: the surface closes a cut cell's fluid
+    // part, and its share of the cell's boundary is the shut parts, sum_f (1 - alpha_f) A_f n_f (n_f the face's
+    // outward normal, A_f per unit depth), so the body receives rho depth q_c (1 - alpha_f) A_f n_f from each,
+    // applied at the shut part's middle. It is the dual of the flux A (1 - alpha) U_b that the body's motion
+    // carries through the same parts (the work q does on the body is the work the projection's pressure does on
+    // the fluid), and a cell whose faces are all shut or all open receives nothing. Owned cells, reduced over the
+    // ranks; the apertures of the last update(). Collective.
+    std::vector<Wrench> pressure_wrenches(const Field2D& q, double density, double depth) const;
+    // U on the faces body b shuts whole or in part (ghosts included), 0 elsewhere: the surfaces of body b moving at U,
+    // for FlowSolver::cut_response.
+    Velocity shut_velocity(std::size_t b, const Vec2& U) const;
+    // Body b's velocity changed by dU after the step's projection, its surfaces where they were: the faces it shuts
+    // carry the new velocity (ImmersedBoundary::body_moved), so that the continuity the projection met still holds.
+    void add_shut_velocity(std::size_t b, const Vec2& dU);
+
 private:
     const Grid& grid_;
     const std::vector<Body>& bodies_;
     Field2D aperture_u_, aperture_v_, open_;
     Velocity body_velocity_;
+    // Per face: the body that shuts it (-1: open), and the middle of its shut part as a fraction along the face
+    // from its lower end (x for a v face, y for a u face).
+    Field2D owner_u_, owner_v_, shut_middle_u_, shut_middle_v_;
     bool done_ = false;
 };
 

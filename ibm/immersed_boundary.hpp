@@ -20,6 +20,7 @@
 // Both refer to the step's mid-point in time: the forcing acts over the step and the pressure is p^{n+1/2}.
 // The walls a turbulence model sees are the cells beside the outlines (immersed_wall).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "carrier.hpp"
@@ -55,6 +56,16 @@ public:
     void place(double t) override;
     void impose(Velocity& predicted, double dt) override;
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
+    // Ghost faces: a free body's translation is coupled exactly (body/carrier.hpp). Its added mass over the step is
+    // the force of the cut pressure problem's response to the body's surfaces moving at e_x and e_y
+    // (FlowSolver::cut_response, CutFaces::pressure_wrenches), M_jk = -F_j(phi_k), computed with the step's matrix
+    // in hydrodynamic_wrench(); body_moved() adds the response to the change the update made to the velocity the
+    // step imposed, so the next step starts from a flow that moves with the body. Without it the body met the flow's
+    // answer to its last change one step late, and a block whose added mass grows as it nears the bed (two thirds of
+    // its mass at 3 cm) diverged there (docs/validation.md, "Sharp interface", seventh step). The rotation keeps the
+    // virtual mass. Forcing faces and the diffuse interface: none (passes and the virtual mass).
+    std::optional<Eigen::Matrix2d> added_mass(std::size_t b) const override;
+    void body_moved(std::size_t b, double dt) override;
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
 
     void locate_walls() override { walls_.locate(); }
@@ -85,8 +96,14 @@ private:
     bool pressure_boundary_set_ = false;
     void set_pressure_boundary();                   // the flow's pressure problem from cut_
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
+    Velocity start_velocity_;                       // ghost faces with a free body: u^n
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
+    // Ghost faces, per free body: the flow's response to its translation in this step, its added mass, and the
+    // velocity the step imposed on its surfaces (body_moved()).
+    std::vector<std::optional<FlowSolver::HoleResponse>> response_;
+    std::vector<Eigen::Matrix2d> added_mass_;
+    std::vector<Vec2> imposed_velocity_;
 };
 
 }  // namespace chute

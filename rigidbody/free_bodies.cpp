@@ -142,9 +142,14 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
             // free translations (a locked one stays 0); the carrier then brings the flow to it (body_moved).
             const Vec2 rhs = hydrodynamic.force + out.gravity + out.buoyancy + *exact * f.held_acceleration;
             s.acceleration = solve_with_added_mass(f.inertia.mass, *exact, rhs, free_translation);
-            s.angular_acceleration = 0.0;  // the carrier takes bodies with their rotation locked only
+            // The rotation (sharp immersed bodies; the body-fitted carrier locks it) keeps the virtual mass.
+            s.angular_acceleration = turns ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
+                                                 (f.inertia.inertia + cv * f.fluid_inertia)
+                                           : 0.0;
+            if (turns && f.weight_acceleration > 0.0)
+                change = std::abs(s.angular_acceleration - f.angular_acceleration) * reach / f.weight_acceleration;
             f.acceleration = s.acceleration;
-            f.angular_acceleration = 0.0;
+            f.angular_acceleration = s.angular_acceleration;
         } else {
             const Vec2 force = hydrodynamic.force + out.gravity + out.buoyancy;
             s.acceleration = (force + cv * f.fluid_mass * f.acceleration) / (f.inertia.mass + cv * f.fluid_mass);

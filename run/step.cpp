@@ -71,7 +71,7 @@ std::vector<BodyForces> measure_forces(Model& model, StageTimer* timer) {
         // A carrier that couples the body exactly (body-fitted) measures (a) after body_moved() brought the water to
         // the body's final velocity: the impulse is not in it (2026-11-24: subtracting it put 4.6e5 N into the bed
         // bounce's record at the impact).
-        if (model.carrier().added_mass(b)) continue;
+        if (!model.carrier().measure_holds_impulse(b)) continue;
         f.forcing -= f.loads.water_impulse / dt;
         f.forcing_torque -= f.loads.water_angular_impulse / dt;
     }
