@@ -272,9 +272,11 @@ Wrench BodyFitted::hydrodynamic_wrench(std::size_t b, const Velocity&, double) {
     return {settings_.density * settings_.depth * Vec2(m[0], m[1]), 0.0};
 }
 
-std::optional<Eigen::Matrix2d> BodyFitted::added_mass(std::size_t b) const {
+std::optional<Eigen::Matrix3d> BodyFitted::added_mass(std::size_t b) const {
     if (static_cast<int>(b) != carrying_ || !response_) return std::nullopt;
-    return added_mass_;
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();  // the rotation is locked
+    M.topLeftCorner<2, 2>() = added_mass_;
+    return M;
 }
 
 void BodyFitted::body_moved(std::size_t b, double dt) {
@@ -294,7 +296,7 @@ void BodyFitted::body_moved(std::size_t b, double dt) {
     } else {
         follow();
     }
-    flow_->add_hole_response(*response_, {v.x() - imposed[0], v.y() - imposed[1]}, dt);
+    flow_->add_body_response(*response_, {v.x() - imposed[0], v.y() - imposed[1]}, dt);
 }
 
 std::vector<BodyForces> BodyFitted::measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) {

@@ -57,7 +57,7 @@ public:
     // The hole's faces are filled by the flow solver, whenever it fills the domain's boundaries.
     void impose(Velocity&, double) override {}
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
-    std::optional<Eigen::Matrix2d> added_mass(std::size_t b) const override;
+    std::optional<Eigen::Matrix3d> added_mass(std::size_t b) const override;
     void body_moved(std::size_t b, double dt) override;
     bool measure_holds_impulse(std::size_t) const override { return false; }
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
@@ -90,7 +90,7 @@ private:
     FlowSolver* flow_ = nullptr;
     int carrying_ = -1;  // the body the grid moves with (-1: none)
     // A free carrying body: the flow's response to its velocity, and its added mass from it (kg).
-    std::optional<FlowSolver::HoleResponse> response_;
+    std::optional<FlowSolver::BodyResponse> response_;
     Eigen::Matrix2d added_mass_ = Eigen::Matrix2d::Zero();
     // The grid follows body `carrying_`: its velocity is the frame's and its block's, and its block sits where the
     // body is.

@@ -65,12 +65,13 @@ public:
     virtual void impose(Velocity& predicted, double dt) = 0;
     virtual Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) = 0;
     // Strong coupling without passes: a carrier whose wrench is linear in free body b's velocity at the end of
-    // the step gives the slope as the body's added mass M over the step (kg, x and y: the force changes by
-    // -M da when the body's acceleration over the step changes by da), and after the body's update
+    // the step gives the slope as the body's added mass M over the step (x, y and rotation about the centre: kg,
+    // kg m and kg m^2; the wrench changes by -M da when the body's accelerations over the step change by da; zero
+    // rows and columns for a motion it does not couple), and after the body's update
     // body_moved(b, dt) moves the flow and the grid to the body's final motion, so that the update solved with M
     // is the converged one (rigidbody/free_bodies.hpp). Null: the carrier does not (the diffuse immersed boundary,
     // whose free bodies take a virtual mass and passes instead).
-    virtual std::optional<Eigen::Matrix2d> added_mass(std::size_t) const { return std::nullopt; }
+    virtual std::optional<Eigen::Matrix3d> added_mass(std::size_t) const { return std::nullopt; }
     virtual void body_moved(std::size_t, double) {}
     // Whether measure()'s force (a) on body b holds the water's impulse of an impact step (the wrench of the step,
     // as the immersed boundary's is), which the record then takes out (run/step.cpp, measure_forces); false for a

@@ -232,11 +232,11 @@ std::array<double, 2> FlowSolver::solid_gradient_sum(const SolidBlock& b, const 
     return {m[0], m[1]};
 }
 
-FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const HoleResponse* previous,
+FlowSolver::BodyResponse FlowSolver::hole_response(std::size_t block, const BodyResponse* previous,
                                                    std::array<bool, 2> along) {
     if (!solid_ || block >= solid_->blocks().size())
         throw std::logic_error("FlowSolver::hole_response: no solid block " + std::to_string(block));
-    HoleResponse r{{Velocity(*grid_), Velocity(*grid_)}, {Field2D(*grid_), Field2D(*grid_)}};
+    BodyResponse r{{Velocity(*grid_), Velocity(*grid_)}, {Field2D(*grid_), Field2D(*grid_)}};
     for (int k = 0; k < 2; ++k) {
         if (!along[k]) continue;
         // The sides of `block` moving at e_k, everything else at rest: the source the projection sees.
@@ -259,37 +259,35 @@ FlowSolver::HoleResponse FlowSolver::hole_response(std::size_t block, const Hole
     return r;
 }
 
-FlowSolver::HoleResponse FlowSolver::cut_response(const std::array<Velocity, 2>& shut_velocity,
-                                                  const HoleResponse* previous, std::array<bool, 2> along) {
+FlowSolver::BodyResponse FlowSolver::cut_response(const std::vector<Velocity>& shut_velocity) {
     if (!cut_.cells) throw std::logic_error("FlowSolver::cut_response: no pressure boundary is set");
-    HoleResponse r{{Velocity(*grid_), Velocity(*grid_)}, {Field2D(*grid_), Field2D(*grid_)}};
+    BodyResponse r;
     const Field2D &au = *cut_.aperture_u, &av = *cut_.aperture_v;
-    for (int k = 0; k < 2; ++k) {
-        if (!along[k]) continue;
-        // The flux through the shut parts alone: the fluid at rest, the surfaces moving at shut_velocity[k].
+    for (const Velocity& U : shut_velocity) {
+        // The flux through the shut parts alone: the fluid at rest, the surfaces moving at U.
         Velocity flux(*grid_);
         for (int j = 0; j < grid_->ny(); ++j)
-            for (int i = 0; i <= grid_->nx(); ++i) flux.u(i, j) = (1.0 - au(i, j)) * shut_velocity[k].u(i, j);
+            for (int i = 0; i <= grid_->nx(); ++i) flux.u(i, j) = (1.0 - au(i, j)) * U.u(i, j);
         for (int j = 0; j <= grid_->ny(); ++j)
-            for (int i = 0; i < grid_->nx(); ++i) flux.v(i, j) = (1.0 - av(i, j)) * shut_velocity[k].v(i, j);
+            for (int i = 0; i < grid_->nx(); ++i) flux.v(i, j) = (1.0 - av(i, j)) * U.v(i, j);
         divergence(*grid_, flux, 1.0, source_);
-        Field2D phi = previous ? previous->pressure[k] : Field2D(*grid_);
+        Field2D phi(*grid_);
         poisson_->solve(source_, phi, poisson_residual_floor(flux, 1.0));
         halo_->exchange(phi);
         bc_->apply_pressure(phi);
         Velocity v(*grid_);
         subtract_pressure_gradient(*grid_, *bc_, phi, 1.0, v, cut_.aperture_u, cut_.aperture_v);
         halo_->exchange(v);
-        r.velocity[k] = std::move(v);
-        r.pressure[k] = std::move(phi);
+        r.velocity.push_back(std::move(v));
+        r.pressure.push_back(std::move(phi));
     }
     return r;
 }
 
-void FlowSolver::add_hole_response(const HoleResponse& r, std::array<double, 2> change, double dt) {
+void FlowSolver::add_body_response(const BodyResponse& r, const std::vector<double>& change, double dt) {
     for (int j = -kGhost; j < grid_->ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_->nx() + kGhost; ++i) {
-            for (int k = 0; k < 2; ++k) {
+            for (std::size_t k = 0; k < change.size(); ++k) {
                 vel_.u(i, j) += change[k] * r.velocity[k].u(i, j);
                 vel_.v(i, j) += change[k] * r.velocity[k].v(i, j);
                 p_(i, j) += change[k] * r.pressure[k](i, j) / dt;

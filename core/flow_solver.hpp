@@ -144,25 +144,24 @@ public:
     // sum_k dU_k pressure[k] / dt, where pressure[k] = phi_k with laplacian(phi_k) = div(e_k on the sides) and
     // velocity[k] = -grad phi_k on the fluid faces (k = x, y). It depends on the grid's spacings alone, so one
     // computation serves a rigidly translating grid for the whole run. Collective: two Poisson solves.
-    struct HoleResponse {
-        std::array<Velocity, 2> velocity;
-        std::array<Field2D, 2> pressure;
+    struct BodyResponse {
+        std::vector<Velocity> velocity;
+        std::vector<Field2D> pressure;
     };
     // `previous`: a response on a nearby grid (the lines stretched a little), the solves' starting guess. `along`:
     // the directions to solve for (a body locked along the other leaves its response there zero: one solve, not two).
-    HoleResponse hole_response(std::size_t block, const HoleResponse* previous = nullptr,
+    BodyResponse hole_response(std::size_t block, const BodyResponse* previous = nullptr,
                                std::array<bool, 2> along = {true, true});
-    // The step's u^{n+1} and p^{n+1/2} changed by the response to dU = `change`, the solid cells already holding
-    // the block's new velocity (their faces are filled from it). Collective.
-    void add_hole_response(const HoleResponse& response, std::array<double, 2> change, double dt);
-    // The same response for a body that a sharp surface cuts into the pressure problem (set_pressure_boundary): the
-    // shut parts of the faces moving at shut_velocity[k] (body b's faces at e_k, every other face 0: a field from
-    // CutFaces::shut_velocity), the fluid at rest: pressure[k] = phi_k with laplacian(phi_k) the divergence of
-    // A (1 - alpha) shut_velocity[k] and velocity[k] = -grad phi_k on the faces the projection corrects (alpha > 0).
-    // add_hole_response() adds it. Linear in U_b as the projection is, with the matrix of the step's projection.
-    // `previous`: the solves' starting guess; `along`: the directions to solve for. Collective.
-    HoleResponse cut_response(const std::array<Velocity, 2>& shut_velocity, const HoleResponse* previous = nullptr,
-                              std::array<bool, 2> along = {true, true});
+    // The same for a body that a sharp surface cuts into the pressure problem (set_pressure_boundary), one entry per
+    // motion k of the body: the shut parts of the faces moving at shut_velocity[k] (the body's surfaces in a unit
+    // translation or rotation, every other face at rest: CutFaces::shut_velocity), the fluid at rest: pressure[k] =
+    // phi_k with laplacian(phi_k) the divergence of A (1 - alpha) shut_velocity[k], velocity[k] = -grad phi_k on the
+    // faces the projection corrects (alpha > 0), with the matrix of the step's projection. Collective: one Poisson
+    // solve per entry.
+    BodyResponse cut_response(const std::vector<Velocity>& shut_velocity);
+    // The step's u^{n+1} and p^{n+1/2} changed by the response to the motions' changes `change` (one per entry), the
+    // body already holding its new velocity (a hole's faces are filled from it). Collective.
+    void add_body_response(const BodyResponse& response, const std::vector<double>& change, double dt);
     // The sum over a solid block's faces of V grad(q) (m^3 times q's unit per metre): the pressure part of
     // solid_momentum_rate for a field q. Collective.
     std::array<double, 2> solid_gradient_sum(const SolidBlock& block, const Field2D& q) const;

@@ -99,7 +99,9 @@ bool CutFaces::update() {
             middle(i, j) = pa >= 0.0 ? 1.0 - 0.5 * (1.0 - alpha(i, j)) : 0.5 * (1.0 - alpha(i, j));
         }
         by(i, j) = body;
-        const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
+        // The body's velocity at the shut part's middle: the mean of its rigid motion over that part.
+        const Vec2 p =
+            is_u ? Vec2(X.f(i), Y.f(j) + middle(i, j) * Y.w(j)) : Vec2(X.f(i) + middle(i, j) * X.w(i), Y.f(j));
         const Vec2 v = bodies_[body].velocity_at(p);
         U(i, j) = is_u ? v.x() : v.y();
     };
@@ -116,23 +118,27 @@ bool CutFaces::update() {
     return true;
 }
 
-Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U) const {
+Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U, double omega, const Vec2& centre) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
     Velocity out(grid_);
     const auto body = static_cast<double>(b);
+    auto at = [&](const Vec2& p) -> Vec2 {
+        return {U.x() + omega * (centre.y() - p.y()), U.y() + omega * (p.x() - centre.x())};
+    };
     for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
-            if (owner_u_(i, j) == body) out.u(i, j) = U.x();
-            if (owner_v_(i, j) == body) out.v(i, j) = U.y();
+            if (owner_u_(i, j) == body) out.u(i, j) = at({X.f(i), Y.f(j) + shut_middle_u_(i, j) * Y.w(j)}).x();
+            if (owner_v_(i, j) == body) out.v(i, j) = at({X.f(i) + shut_middle_v_(i, j) * X.w(i), Y.f(j)}).y();
         }
     return out;
 }
 
-void CutFaces::add_shut_velocity(std::size_t b, const Vec2& dU) {
-    const auto body = static_cast<double>(b);
+void CutFaces::add_shut_velocity(const Velocity& change) {
     for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
-            if (owner_u_(i, j) == body) body_velocity_.u(i, j) += dU.x();
-            if (owner_v_(i, j) == body) body_velocity_.v(i, j) += dU.y();
+            body_velocity_.u(i, j) += change.u(i, j);
+            body_velocity_.v(i, j) += change.v(i, j);
         }
 }
 

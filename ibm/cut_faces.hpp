@@ -10,7 +10,7 @@
 // crossed it: alpha 1 where the open part is the corner's distance, a step each time a moving corner crossed a face
 // line.) Two ends outside: open (a surface bulging through a face between its ends is not seen). The cells
 // with an open face hold flow (the pressure problem's cells); the flux through a face is
-//   A (alpha u + (1 - alpha) U_b),  U_b the body's velocity at the face,
+//   A (alpha u + (1 - alpha) U_b),  U_b the body's velocity at the shut part's middle,
 // the fluid's part through the open fraction and the body's through the rest, so that a cut cell's mass balance
 // carries the body's motion across its shut part (the geometric conservation of a moving surface: Seo & Mittal
 // 2011, JCP 230:7347; Cheny & Botella 2010, JCP 229:1043), and the pressure problem's coefficients A alpha / d change
@@ -53,12 +53,13 @@ public:
     // the fluid), and a cell whose faces are all shut or all open receives nothing. Owned cells, reduced over the
     // ranks; the apertures of the last update(). Collective.
     std::vector<Wrench> pressure_wrenches(const Field2D& q, double density, double depth) const;
-    // U on the faces body b shuts whole or in part (ghosts included), 0 elsewhere: the surfaces of body b moving at U,
-    // for FlowSolver::cut_response.
-    Velocity shut_velocity(std::size_t b, const Vec2& U) const;
-    // Body b's velocity changed by dU after the step's projection, its surfaces where they were: the faces it shuts
-    // carry the new velocity (ImmersedBoundary::body_moved), so that the continuity the projection met still holds.
-    void add_shut_velocity(std::size_t b, const Vec2& dU);
+    // The velocity U + omega x (x - centre) at the middles of the shut parts of the faces body b shuts whole or in
+    // part (ghosts included), 0 elsewhere: body b's surfaces in a rigid motion, for FlowSolver::cut_response. (The
+    // middle, where pressure_wrenches() applies its force too: the response's added mass is then symmetric.)
+    Velocity shut_velocity(std::size_t b, const Vec2& U, double omega, const Vec2& centre) const;
+    // The bodies' velocities changed after the step's projection, their surfaces where they were (ImmersedBoundary::
+    // body_moved): the shut faces carry `change` more, so that the continuity the projection met still holds.
+    void add_shut_velocity(const Velocity& change);
 
 private:
     const Grid& grid_;

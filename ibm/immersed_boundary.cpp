@@ -55,9 +55,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       start_velocity_(grid),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()),
-      response_(bodies.size()),
-      added_mass_(bodies.size(), Eigen::Matrix2d::Zero()),
-      imposed_velocity_(bodies.size(), Vec2::Zero()) {
+      coupling_(bodies.size()) {
     if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
@@ -170,34 +168,55 @@ Wrench ImmersedBoundary::hydrodynamic_wrench(std::size_t b, const Velocity& vel,
         wrench_[b].torque += now.torque - before.torque;
         const Body& body = bodies_[b];
         if (body.free()) {
+            Coupling c;
+            const BodyState& s = body.state();
             const auto& locked = body.config().motion.locked;
-            const std::array<bool, 2> along{!locked[0], !locked[1]};
-            const std::array<Velocity, 2> unit{cut_->shut_velocity(b, {1.0, 0.0}), cut_->shut_velocity(b, {0.0, 1.0})};
-            // From zero, not from the last step's response: a restart then repeats the straight run bit for bit.
-            response_[b] = flow_->cut_response(unit, nullptr, along);
-            for (int k = 0; k < 2; ++k) {
-                const Vec2 push = cut_->pressure_wrenches(response_[b]->pressure[k], rho, depth)[b].force;
-                added_mass_[b](0, k) = -push.x();
-                added_mass_[b](1, k) = -push.y();
+            for (int k = 0; k < 3; ++k) {
+                if (locked[k]) continue;
+                c.motions.push_back(k);
+                c.unit.push_back(
+                    cut_->shut_velocity(b, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0}, k == 2 ? 1.0 : 0.0, s.centre));
             }
-            imposed_velocity_[b] = body.state().velocity;
+            // From zero, not from the last step's response: a restart then repeats the straight run bit for bit.
+            c.response = flow_->cut_response(c.unit);
+            for (std::size_t l = 0; l < c.motions.size(); ++l) {
+                const Wrench push = cut_->pressure_wrenches(c.response.pressure[l], rho, depth)[b];
+                c.added_mass.col(c.motions[l]) = -Eigen::Vector3d(push.force.x(), push.force.y(), push.torque);
+            }
+            c.imposed = Eigen::Vector3d(s.velocity.x(), s.velocity.y(), s.angular_velocity);
+            coupling_[b] = std::move(c);
         }
     }
     return wrench_[b];
 }
 
-std::optional<Eigen::Matrix2d> ImmersedBoundary::added_mass(std::size_t b) const {
-    if (!response_[b]) return std::nullopt;
-    return added_mass_[b];
+std::optional<Eigen::Matrix3d> ImmersedBoundary::added_mass(std::size_t b) const {
+    if (!coupling_[b]) return std::nullopt;
+    return coupling_[b]->added_mass;
 }
 
 void ImmersedBoundary::body_moved(std::size_t b, double dt) {
-    if (!response_[b]) return;
-    const Vec2 change = bodies_[b].state().velocity - imposed_velocity_[b];
-    flow_->add_hole_response(*response_[b], {change.x(), change.y()}, dt);
-    cut_->add_shut_velocity(b, change);
-    // The wrench of the flow as it now is (measure (a)): its pressure changed by the response, -M dU / dt.
-    wrench_[b].force -= added_mass_[b] * change / dt;
+    if (!coupling_[b]) return;
+    const Coupling& c = *coupling_[b];
+    const BodyState& s = bodies_[b].state();
+    const Eigen::Vector3d change = Eigen::Vector3d(s.velocity.x(), s.velocity.y(), s.angular_velocity) - c.imposed;
+    std::vector<double> along;
+    Velocity shut(grid_);
+    for (std::size_t l = 0; l < c.motions.size(); ++l) {
+        const double d = change[c.motions[l]];
+        along.push_back(d);
+        for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
+            for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
+                shut.u(i, j) += d * c.unit[l].u(i, j);
+                shut.v(i, j) += d * c.unit[l].v(i, j);
+            }
+    }
+    flow_->add_body_response(c.response, along, dt);
+    cut_->add_shut_velocity(shut);
+    // The wrench of the flow as it now is (measure (a)): its pressure changed by the response, -M d(motion) / dt.
+    const Eigen::Vector3d push = -c.added_mass * change / dt;
+    wrench_[b].force += Vec2(push[0], push[1]);
+    wrench_[b].torque += push[2];
 }
 
 std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Field2D& p,

@@ -56,15 +56,15 @@ public:
     void place(double t) override;
     void impose(Velocity& predicted, double dt) override;
     Wrench hydrodynamic_wrench(std::size_t b, const Velocity& vel, double dt) override;
-    // Ghost faces: a free body's translation is coupled exactly (body/carrier.hpp). Its added mass over the step is
-    // the force of the cut pressure problem's response to the body's surfaces moving at e_x and e_y
-    // (FlowSolver::cut_response, CutFaces::pressure_wrenches), M_jk = -F_j(phi_k), computed with the step's matrix
-    // in hydrodynamic_wrench(); body_moved() adds the response to the change the update made to the velocity the
-    // step imposed, so the next step starts from a flow that moves with the body. Without it the body met the flow's
-    // answer to its last change one step late, and a block whose added mass grows as it nears the bed (two thirds of
-    // its mass at 3 cm) diverged there (docs/validation.md, "Sharp interface", seventh step). The rotation keeps the
-    // virtual mass. Forcing faces and the diffuse interface: none (passes and the virtual mass).
-    std::optional<Eigen::Matrix2d> added_mass(std::size_t b) const override;
+    // Ghost faces: a free body is coupled exactly (body/carrier.hpp). Its added mass over the step is the wrench of
+    // the cut pressure problem's response to the body's surfaces in a unit motion along each free degree of freedom
+    // (x, y, rotation about its centre; FlowSolver::cut_response, CutFaces::pressure_wrenches), M_jk = -W_j(phi_k),
+    // computed with the step's matrix in hydrodynamic_wrench() (one Poisson solve per free degree of freedom);
+    // body_moved() adds the response to the change the update made to the motion the step imposed, so the next step
+    // starts from a flow that moves with the body. Without it the body met the flow's answer to its last change a
+    // step late, and a block whose added mass grows as it nears the bed diverged 3 cm above it (docs/validation.md,
+    // "Sharp interface", seventh step). Forcing faces and the diffuse interface: none (passes and the virtual mass).
+    std::optional<Eigen::Matrix3d> added_mass(std::size_t b) const override;
     void body_moved(std::size_t b, double dt) override;
     std::vector<BodyForces> measure(const Velocity& vel, const Field2D& p, const WallTurbulence* turbulence) override;
 
@@ -99,11 +99,17 @@ private:
     Velocity start_velocity_;                       // ghost faces with a free body: u^n
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
-    // Ghost faces, per free body: the flow's response to its translation in this step, its added mass, and the
-    // velocity the step imposed on its surfaces (body_moved()).
-    std::vector<std::optional<FlowSolver::HoleResponse>> response_;
-    std::vector<Eigen::Matrix2d> added_mass_;
-    std::vector<Vec2> imposed_velocity_;
+    // Ghost faces, per free body: its free degrees of freedom (0 x, 1 y, 2 rotation), their unit motions' shut-face
+    // velocities and the flow's response to them in this step, its added mass, and the motion the step imposed
+    // (body_moved()).
+    struct Coupling {
+        std::vector<int> motions;
+        std::vector<Velocity> unit;
+        FlowSolver::BodyResponse response;
+        Eigen::Matrix3d added_mass = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d imposed = Eigen::Vector3d::Zero();
+    };
+    std::vector<std::optional<Coupling>> coupling_;
 };
 
 }  // namespace chute

@@ -50,17 +50,21 @@ double FreeBodies::max_dt(double cfl) const {
 namespace {
 double contraction(double change, double previous) { return std::min(change / previous, 0.99); }
 
-// (m + M) x = b on the free translations of an exactly coupled body (M its added mass); a locked one stays 0.
-Vec2 solve_with_added_mass(double mass, const Eigen::Matrix2d& added, Vec2 b, const Vec2& free_translation) {
-    Eigen::Matrix2d A = mass * Eigen::Matrix2d::Identity() + added;
-    for (int k = 0; k < 2; ++k)
-        if (free_translation[k] == 0.0) {
+// (m + M) x = b on the free degrees of freedom of an exactly coupled body (x, y, rotation; m = diag(m, m, I), M its
+// added mass); a locked one stays 0.
+Eigen::Vector3d solve_with_added_mass(const RigidInertia& inertia, const Eigen::Matrix3d& added, Eigen::Vector3d b) {
+    Eigen::Matrix3d A = Eigen::Vector3d(inertia.mass, inertia.mass, inertia.inertia).asDiagonal();
+    A += added;
+    const std::array<Dof, 3> dofs{Dof::x, Dof::y, Dof::rotation};
+    for (int k = 0; k < 3; ++k)
+        if (!inertia.free(dofs[k])) {
             A.row(k).setZero();
             A(k, k) = 1.0;
             b[k] = 0.0;
         }
     return A.partialPivLu().solve(b);
 }
+Eigen::Vector3d motion(const Vec2& linear, double angular) { return {linear.x(), linear.y(), angular}; }
 }  // namespace
 
 double remaining_change(double change, double previous) {
@@ -109,7 +113,7 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
     for (Free& f : free_) {
         Body& body = bodies_[f.index];
         const Wrench hydrodynamic = carrier_.hydrodynamic_wrench(f.index, vel, dt);  // at the predicted place
-        const std::optional<Eigen::Matrix2d> exact = carrier_.added_mass(f.index);
+        const std::optional<Eigen::Matrix3d> exact = carrier_.added_mass(f.index);
         // An exactly coupled body (body-fitted) at an impact: the rebound law sets its velocity; with `obstacle` the
         // obstacle takes the water's share of the impulse, with `body` block and water share their momentum at once
         // (below); body_moved() brings the water to the body's final velocity exactly.
@@ -139,15 +143,12 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
                      scale;
         } else if (exact) {
             // F(a) = F(a*) - M (a - a*) exactly, so m a = F(a) + W is (m + M) a = F(a*) + W + M a*, solved on the
-            // free translations (a locked one stays 0); the carrier then brings the flow to it (body_moved).
-            const Vec2 rhs = hydrodynamic.force + out.gravity + out.buoyancy + *exact * f.held_acceleration;
-            s.acceleration = solve_with_added_mass(f.inertia.mass, *exact, rhs, free_translation);
-            // The rotation (sharp immersed bodies; the body-fitted carrier locks it) keeps the virtual mass.
-            s.angular_acceleration = turns ? (hydrodynamic.torque + cv * f.fluid_inertia * f.angular_acceleration) /
-                                                 (f.inertia.inertia + cv * f.fluid_inertia)
-                                           : 0.0;
-            if (turns && f.weight_acceleration > 0.0)
-                change = std::abs(s.angular_acceleration - f.angular_acceleration) * reach / f.weight_acceleration;
+            // free degrees of freedom (a locked one stays 0); the carrier then brings the flow to it (body_moved).
+            const Eigen::Vector3d rhs = motion(hydrodynamic.force + out.gravity + out.buoyancy, hydrodynamic.torque) +
+                                        *exact * motion(f.held_acceleration, f.held_angular_acceleration);
+            const Eigen::Vector3d a = solve_with_added_mass(f.inertia, *exact, rhs);
+            s.acceleration = Vec2(a[0], a[1]);
+            s.angular_acceleration = a[2];
             f.acceleration = s.acceleration;
             f.angular_acceleration = s.angular_acceleration;
         } else {
@@ -184,10 +185,14 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
                 // Coupled exactly: the law reverses the block alone, then block and water share their momentum at
                 // once, (m + M) V = m V_law + M v_free (M the added mass, v_free the velocity the water moved with:
                 // the block's without the impact), on the free translations; the water's impulse is m (V - V_law).
-                v = solve_with_added_mass(f.inertia.mass, *exact,
-                                          f.inertia.mass * s.velocity + *exact * free_flight.velocity,
-                                          free_translation);
+                const Eigen::Vector3d own(f.inertia.mass * s.velocity.x(), f.inertia.mass * s.velocity.y(),
+                                          f.inertia.inertia * s.angular_velocity);
+                const Eigen::Vector3d shared = solve_with_added_mass(
+                    f.inertia, *exact, own + *exact * motion(free_flight.velocity, free_flight.angular_velocity));
+                v = Vec2(shared[0], shared[1]);
+                w = shared[2];
                 out.water_impulse = f.inertia.mass * (v - s.velocity);
+                out.water_angular_impulse = f.inertia.inertia * (w - s.angular_velocity);
                 change = 0.0;  // exact: the next pass finds the same V
             } else {
                 // The water takes its momentum back from the body at the impact: m (V - V_law) = J_w(V), relaxed

@@ -296,7 +296,7 @@ TEST(BodyFitted, FreeBodyIsCoupledExactlyEveryStep) {
     for (const double density : {100.0, 2500.0}) {
         Model model(falling_square(density), MPI_COMM_WORLD);
         const double m = density, m_f = 1000.0, g = 9.81;
-        const Eigen::Matrix2d M = *model.carrier().added_mass(0);
+        const Eigen::Matrix3d M = *model.carrier().added_mass(0);
         EXPECT_NEAR(M(0, 1), 0.0, 1e-9 * M(1, 1));
         EXPECT_NEAR(M(1, 0), 0.0, 1e-9 * M(1, 1));
         EXPECT_GT(M(1, 1) / m_f, 1.1885);
