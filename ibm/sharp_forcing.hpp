@@ -158,6 +158,7 @@ private:
         std::size_t first_image = 0;           // this rank's first image point among them
         std::vector<Stencil> images2;          // the second image points (quadratic profile), in the same order
         std::vector<Stencil> images_other;     // the other component at the image points (wall-law profile)
+        std::vector<double> self;              // the weight of each forcing face in its own image's stencil
         std::unordered_set<long long> inside;  // ghost faces: the faces inside a body at the last classification
     };
     bool any_moves() const;
