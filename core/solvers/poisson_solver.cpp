@@ -333,7 +333,8 @@ void PoissonSolver::update_matrix() {
     HYPRE_StructPCGSetup(pcg_, matrix_, b_, x_);
 }
 
-PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double absolute_tolerance) {
+PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double absolute_tolerance,
+                                  double relative_tolerance) {
     if (direct_) {
         direct_->solve(source, p);
         return PoissonStats{};
@@ -367,7 +368,9 @@ PoissonStats PoissonSolver::solve(const Field2D& source, Field2D& p, double abso
     HYPRE_StructVectorAssemble(x_);
 
     HYPRE_StructPCGSetAbsoluteTol(pcg_, absolute_tolerance);
+    if (relative_tolerance > 0.0) HYPRE_StructPCGSetTol(pcg_, relative_tolerance);
     HYPRE_StructPCGSolve(pcg_, matrix_, b_, x_);
+    if (relative_tolerance > 0.0) HYPRE_StructPCGSetTol(pcg_, tolerance_);
     PoissonStats stats;
     HYPRE_StructPCGGetNumIterations(pcg_, &stats.iterations);
     HYPRE_StructPCGGetFinalRelativeResidualNorm(pcg_, &stats.relative_residual);

@@ -60,8 +60,10 @@ public:
         aperture_v_ = aperture_v;
     }
     // Solve laplacian(p) = source; p holds the initial guess on entry (warm start) and the solution on exit.
-    // absolute_tolerance bounds the residual norm from below (for source ~ 0).
-    PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0);
+    // absolute_tolerance bounds the residual norm from below (for source ~ 0); relative_tolerance > 0 replaces the
+    // solver's own (numerics.poisson.tolerance) for this solve.
+    PoissonStats solve(const Field2D& source, Field2D& p, double absolute_tolerance = 0.0,
+                       double relative_tolerance = 0.0);
     bool singular() const { return singular_; }
     bool direct() const { return direct_ != nullptr; }
     // Cut along surfaces, PCG preconditioned by the direct solve and a window's (cut_poisson_preconditioner.hpp).
