@@ -100,9 +100,7 @@ bool CutFaces::update() {
         }
         by(i, j) = body;
         // The body's velocity at the shut part's middle: the mean of its rigid motion over that part.
-        const Vec2 p =
-            is_u ? Vec2(X.f(i), Y.f(j) + middle(i, j) * Y.w(j)) : Vec2(X.f(i) + middle(i, j) * X.w(i), Y.f(j));
-        const Vec2 v = bodies_[body].velocity_at(p);
+        const Vec2 v = bodies_[body].velocity_at(shut_point(is_u, i, j, middle(i, j)));
         U(i, j) = is_u ? v.x() : v.y();
     };
     for (int j = -1; j <= ny; ++j)
@@ -118,9 +116,13 @@ bool CutFaces::update() {
     return true;
 }
 
-Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U, double omega, const Vec2& centre) const {
+Vec2 CutFaces::shut_point(bool is_u, int i, int j, double middle) const {
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
+    return is_u ? Vec2(X.f(i), Y.f(j) + middle * Y.w(j)) : Vec2(X.f(i) + middle * X.w(i), Y.f(j));
+}
+
+Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U, double omega, const Vec2& centre) const {
     Velocity out(grid_);
     const auto body = static_cast<double>(b);
     auto at = [&](const Vec2& p) -> Vec2 {
@@ -128,17 +130,17 @@ Velocity CutFaces::shut_velocity(std::size_t b, const Vec2& U, double omega, con
     };
     for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
-            if (owner_u_(i, j) == body) out.u(i, j) = at({X.f(i), Y.f(j) + shut_middle_u_(i, j) * Y.w(j)}).x();
-            if (owner_v_(i, j) == body) out.v(i, j) = at({X.f(i) + shut_middle_v_(i, j) * X.w(i), Y.f(j)}).y();
+            if (owner_u_(i, j) == body) out.u(i, j) = at(shut_point(true, i, j, shut_middle_u_(i, j))).x();
+            if (owner_v_(i, j) == body) out.v(i, j) = at(shut_point(false, i, j, shut_middle_v_(i, j))).y();
         }
     return out;
 }
 
-void CutFaces::add_shut_velocity(const Velocity& change) {
+void CutFaces::add_shut_velocity(const Velocity& unit, double scale) {
     for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
         for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
-            body_velocity_.u(i, j) += change.u(i, j);
-            body_velocity_.v(i, j) += change.v(i, j);
+            body_velocity_.u(i, j) += scale * unit.u(i, j);
+            body_velocity_.v(i, j) += scale * unit.v(i, j);
         }
 }
 
@@ -153,8 +155,7 @@ std::vector<Wrench> CutFaces::pressure_wrenches(const Field2D& q, double density
         const double shut = 1.0 - (is_u ? aperture_u_ : aperture_v_)(i, j);
         if (shut <= 0.0) return;
         const auto b = static_cast<std::size_t>(by(i, j));
-        const double middle = (is_u ? shut_middle_u_ : shut_middle_v_)(i, j);
-        const Vec2 at = is_u ? Vec2(X.f(i), Y.f(j) + middle * Y.w(j)) : Vec2(X.f(i) + middle * X.w(i), Y.f(j));
+        const Vec2 at = shut_point(is_u, i, j, (is_u ? shut_middle_u_ : shut_middle_v_)(i, j));
         const double amount = qc * shut * (is_u ? Y.w(j) : X.w(i)) * n;
         const Vec2 f = is_u ? Vec2(amount, 0.0) : Vec2(0.0, amount);
         sums[3 * b] += f.x();

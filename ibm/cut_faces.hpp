@@ -58,8 +58,9 @@ public:
     // middle, where pressure_wrenches() applies its force too: the response's added mass is then symmetric.)
     Velocity shut_velocity(std::size_t b, const Vec2& U, double omega, const Vec2& centre) const;
     // The bodies' velocities changed after the step's projection, their surfaces where they were (ImmersedBoundary::
-    // body_moved): the shut faces carry `change` more, so that the continuity the projection met still holds.
-    void add_shut_velocity(const Velocity& change);
+    // body_moved): the shut faces carry `scale` times `unit` (a shut_velocity() field) more, so that the continuity the
+    // projection met still holds.
+    void add_shut_velocity(const Velocity& unit, double scale);
 
 private:
     const Grid& grid_;
@@ -69,6 +70,7 @@ private:
     // Per face: the body that shuts it (-1: open), and the middle of its shut part as a fraction along the face
     // from its lower end (x for a v face, y for a u face).
     Field2D owner_u_, owner_v_, shut_middle_u_, shut_middle_v_;
+    Vec2 shut_point(bool is_u, int i, int j, double middle) const;  // a face's point `middle` along it
     bool done_ = false;
 };
 

@@ -201,18 +201,11 @@ void ImmersedBoundary::body_moved(std::size_t b, double dt) {
     const BodyState& s = bodies_[b].state();
     const Eigen::Vector3d change = Eigen::Vector3d(s.velocity.x(), s.velocity.y(), s.angular_velocity) - c.imposed;
     std::vector<double> along;
-    Velocity shut(grid_);
     for (std::size_t l = 0; l < c.motions.size(); ++l) {
-        const double d = change[c.motions[l]];
-        along.push_back(d);
-        for (int j = -kGhost; j < grid_.ny() + kGhost; ++j)
-            for (int i = -kGhost; i < grid_.nx() + kGhost; ++i) {
-                shut.u(i, j) += d * c.unit[l].u(i, j);
-                shut.v(i, j) += d * c.unit[l].v(i, j);
-            }
+        along.push_back(change[c.motions[l]]);
+        cut_->add_shut_velocity(c.unit[l], along.back());
     }
     flow_->add_body_response(c.response, along, dt);
-    cut_->add_shut_velocity(shut);
     // The wrench of the flow as it now is (measure (a)): its pressure changed by the response, -M d(motion) / dt.
     const Eigen::Vector3d push = -c.added_mass * change / dt;
     wrench_[b].force += Vec2(push[0], push[1]);

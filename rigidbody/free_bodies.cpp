@@ -185,8 +185,7 @@ void FreeBodies::correct(double t, double dt, const Velocity& vel) {
                 // Coupled exactly: the law reverses the block alone, then block and water share their momentum at
                 // once, (m + M) V = m V_law + M v_free (M the added mass, v_free the velocity the water moved with:
                 // the block's without the impact), on the free translations; the water's impulse is m (V - V_law).
-                const Eigen::Vector3d own(f.inertia.mass * s.velocity.x(), f.inertia.mass * s.velocity.y(),
-                                          f.inertia.inertia * s.angular_velocity);
+                const Eigen::Vector3d own = motion(f.inertia.mass * s.velocity, f.inertia.inertia * s.angular_velocity);
                 const Eigen::Vector3d shared = solve_with_added_mass(
                     f.inertia, *exact, own + *exact * motion(free_flight.velocity, free_flight.angular_velocity));
                 v = Vec2(shared[0], shared[1]);
