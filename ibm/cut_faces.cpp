@@ -55,14 +55,18 @@ bool CutFaces::update() {
     std::vector<double> phi(static_cast<std::size_t>(cw) * ch, std::numeric_limits<double>::infinity());
     std::vector<int> owner(phi.size(), -1);
     auto at = [&](int i, int j) { return static_cast<std::size_t>(j + 1) * cw + (i + 1); };
+    std::vector<double> spacing, tolerance;  // per body (min_spacing_along reads the whole axis: once per update)
+    for (const Body& body : bodies_) {
+        spacing.push_back(min_spacing_along(grid_, body));
+        tolerance.push_back(on_surface_tolerance(spacing.back()));
+    }
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
-        const double tolerance = on_surface_tolerance(min_spacing_along(grid_, body));
         int i0 = -1, i1 = nx + 1, j0 = -1, j1 = ny + 1;
         if (outline.closed()) {
             const Vec2 c = body.state().centre;
-            const double reach = outline.reach() + 2.0 * min_spacing_along(grid_, body);  // every cut face's ends
+            const double reach = outline.reach() + 2.0 * spacing[b];  // every cut face's ends
             while (i0 < i1 && X.f(i0 + 1) < c.x() - reach) ++i0;
             while (i1 > i0 && X.f(i1 - 1) > c.x() + reach) --i1;
             while (j0 < j1 && Y.f(j0 + 1) < c.y() - reach) ++j0;
@@ -70,7 +74,7 @@ bool CutFaces::update() {
         }
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
-                const double d = surface_distance(body, Vec2(X.f(i), Y.f(j)), tolerance);
+                const double d = surface_distance(body, Vec2(X.f(i), Y.f(j)), tolerance[b]);
                 if (d < phi[at(i, j)]) phi[at(i, j)] = d, owner[at(i, j)] = static_cast<int>(b);
             }
     }
@@ -92,9 +96,8 @@ bool CutFaces::update() {
             alpha(i, j) = 0.0;
         else {
             const Vec2 A(X.f(i), Y.f(j)), B(X.f(i2), Y.f(j2));
-            const double tolerance = on_surface_tolerance(min_spacing_along(grid_, bodies_[body]));
-            alpha(i, j) = pa >= 0.0 ? open_fraction(bodies_[body], A, B, tolerance)
-                                    : open_fraction(bodies_[body], B, A, tolerance);
+            alpha(i, j) = pa >= 0.0 ? open_fraction(bodies_[body], A, B, tolerance[body])
+                                    : open_fraction(bodies_[body], B, A, tolerance[body]);
             // The shut part runs from the inside end over 1 - alpha of the face.
             middle(i, j) = pa >= 0.0 ? 1.0 - 0.5 * (1.0 - alpha(i, j)) : 0.5 * (1.0 - alpha(i, j));
         }

@@ -12,8 +12,10 @@
 //                                    fluid's momentum from the grid, Kempe & Froehlich 2012):
 //                                      F = rho depth ( -sum_l F_l dV_l + (P^{n+1} - P^n) / dt )
 //   measure(u^{n+1}, p^{n+1/2})      the hydrodynamic force and torque on each body, two independent ways:
-//     (a) from the forcing: for a free body the wrench above; for a fixed or prescribed one the rigid-body
-//         form of the internal fluid term (Uhlmann 2005, eq. 23 and 28),
+//     (a) from the forcing: for a free body, and for every body on ghost faces, the wrench above (ghost faces:
+//         the momentum over the forcing's own faces at the step's end, and the projection's pressure increment
+//         through the cut cells' shut parts); on the diffuse interface and forcing faces, for a fixed or
+//         prescribed body, the rigid-body form of the internal fluid term (Uhlmann 2005, eq. 23 and 28),
 //           F = rho depth ( -sum_l F_l dV_l + A dU_c/dt ),   M = rho depth ( -sum_l r_l x F_l dV_l + J domega/dt )
 //         A the area and J the polar moment of area of the body: the fluid inside the outline moves with it;
 //     (b) from the stress on the surface, split into pressure, viscous and turbulent parts (surface_stress).
@@ -94,9 +96,12 @@ private:
     ImmersedWall walls_;
     std::unique_ptr<CutFaces> cut_;  // with ghost faces: the faces the surfaces cut, for the pressure problem
     bool pressure_boundary_set_ = false;
-    void set_pressure_boundary();                   // the flow's pressure problem from cut_
+    void set_pressure_boundary();  // the flow's pressure problem from cut_
+    // The wrench of the step on body b from the forcing, the momentum inside and (ghost faces) the pressure increment:
+    // measure (a) of a free body, and of every body on ghost faces.
+    Wrench interface_wrench(std::size_t b, const Velocity& vel, double dt) const;
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
-    Velocity start_velocity_;                       // ghost faces with a free body: u^n
+    Velocity start_velocity_;                       // ghost faces: u^n
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
     // Ghost faces, per free body: its free degrees of freedom (0 x, 1 y, 2 rotation), their unit motions' shut-face

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
 #include "cut_faces.hpp"       // on_surface_tolerance, surface_distance
@@ -97,8 +96,14 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
                 const bool inside = phi < surface;
+                // Deeper inside than a neighbour's spacing (the distance is 1-Lipschitz): no neighbour across, the
+                // body's velocity alone (no surface point needed). Below a plane, half the grid.
+                if (inside && phi < surface - std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) {
+                    candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, p, Vec2(0.0, 0.0), false});
+                    continue;
+                }
                 if (ghost_ && !inside) {  // ghost faces: only inside faces, and those the body left since
-                    if (out.inside.contains(face_key(i, j))) {
+                    if (!out.inside.empty() && out.inside[face_key(i, j)]) {
                         const SurfacePoint s = outline.nearest(body.to_body(p));
                         ForcedFace f{i,   j,   static_cast<int>(b),       volume(i, j),
                                      p,   phi, body.to_world(s.position), body.direction_to_world(s.normal),
@@ -119,22 +124,22 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                                       body.direction_to_world(s.normal), ghost_ ? across : !inside});
             }
     }
-    std::unordered_map<long long, std::size_t> chosen;
+    std::vector<int> chosen(face_keys(), -1);  // per face: its place in `faces`
     std::vector<ForcedFace> faces;
     for (const ForcedFace& f : candidates) {
-        const long long key = face_key(f.i, f.j);
-        auto [it, fresh] = chosen.try_emplace(key, faces.size());
-        if (fresh)
+        int& place = chosen[face_key(f.i, f.j)];
+        if (place < 0) {
+            place = static_cast<int>(faces.size());
             faces.push_back(f);
-        else if (ForcedFace& kept = faces[it->second]; f.phi < kept.phi)  // inside first, then the nearest
+        } else if (ForcedFace& kept = faces[place]; f.phi < kept.phi)  // inside first, then the nearest
             kept = f;
     }
     out.solid.clear();
     out.forcing.clear();
-    out.inside.clear();
+    out.inside.assign(face_keys(), 0);
     for (const ForcedFace& f : faces) {
         (f.reconstructed ? out.forcing : out.solid).push_back(f);
-        if (ghost_ && !f.fresh) out.inside.insert(face_key(f.i, f.j));
+        if (ghost_ && !f.fresh) out.inside[face_key(f.i, f.j)] = 1;
     }
 
     // Image points X_s + L n, L = image_cells h_n (h_n the cells' extent along n), at least 4/3 of phi so that the
@@ -215,6 +220,10 @@ std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, 
 
 long long SharpForcing::face_key(int i, int j) const {
     return static_cast<long long>(j) * (grid_.nx() + 2 * kGhost) + i;
+}
+
+std::size_t SharpForcing::face_keys() const {
+    return static_cast<std::size_t>(grid_.ny() + 2) * (grid_.nx() + 2 * kGhost);
 }
 
 double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? on_surface_tolerance(cell_size_[b]) : 0.0; }

@@ -154,18 +154,19 @@ private:
     // One component's forced faces: the solid ones, then the forcing ones with their image points' stencils.
     struct Component {
         std::vector<ForcedFace> solid, forcing;
-        std::vector<Stencil> images;           // of every rank's image points, this rank's part of each
-        std::size_t first_image = 0;           // this rank's first image point among them
-        std::vector<Stencil> images2;          // the second image points (quadratic profile), in the same order
-        std::vector<Stencil> images_other;     // the other component at the image points (wall-law profile)
-        std::vector<double> self;              // the weight of each forcing face in its own image's stencil
-        std::unordered_set<long long> inside;  // ghost faces: the faces inside a body at the last classification
+        std::vector<Stencil> images;        // of every rank's image points, this rank's part of each
+        std::size_t first_image = 0;        // this rank's first image point among them
+        std::vector<Stencil> images2;       // the second image points (quadratic profile), in the same order
+        std::vector<Stencil> images_other;  // the other component at the image points (wall-law profile)
+        std::vector<double> self;           // the weight of each forcing face in its own image's stencil
+        std::vector<char> inside;           // ghost faces, per face key: 1 inside a body at the last classification
     };
     bool any_moves() const;
     void classify();
     void find_covered_cells();
     double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
     long long face_key(int i, int j) const;  // a face's key among one component's faces (local indices)
+    std::size_t face_keys() const;           // the number of keys of faces i in [0, nx], j in [0, ny]
     // The signed distances to body b of a face's two ends (below on_surface(): negative, as CutFaces counts them).
     std::pair<double, double> end_distances(std::size_t b, bool is_u, int i, int j) const;
     // Ghost faces: the open flux's offsets of the step's cut faces, from their predicted values (before the forcing).

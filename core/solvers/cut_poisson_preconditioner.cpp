@@ -40,12 +40,18 @@ bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std:
     const int ox = grid_.lx().offset, oy = grid_.ly().offset;
     const bool px = grid_.x_axis().periodic(), py = grid_.y_axis().periodic();
 
-    // The cells whose rows the surfaces changed, from every rank.
+    // The cells whose rows the surfaces changed, from every rank; a covered cell away from the surface (its row
+    // the diagonal alone, no coupling to any other cell) is solved by itself, not in the window: below a plane that
+    // is half the grid.
     std::vector<long long> changed;
+    std::vector<int> covered;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             const std::size_t c = 5 * (static_cast<std::size_t>(j) * nx + i);
-            if (!std::equal(cut.begin() + c, cut.begin() + c + 5, whole.begin() + c))
+            if (std::equal(cut.begin() + c, cut.begin() + c + 5, whole.begin() + c)) continue;
+            if (std::all_of(cut.begin() + c + 1, cut.begin() + c + 5, [](double a) { return a == 0.0; }))
+                covered.push_back(j * nx + i);
+            else
                 changed.push_back(static_cast<long long>(j + oy) * gnx + (i + ox));
         }
     const int count = static_cast<int>(changed.size());
@@ -93,6 +99,14 @@ bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std:
             local_.push_back(li >= 0 && lj >= 0 && li < nx && lj < ny ? lj * nx + li : -1);
         }
     if (4 * window_.size() > static_cast<std::size_t>(gnx) * gny) return false;
+    // The covered cells the window leaves out, solved by their diagonal.
+    std::vector<char> in_window(static_cast<std::size_t>(nx) * ny, 0);
+    for (int l : local_)
+        if (l >= 0) in_window[static_cast<std::size_t>(l)] = 1;
+    covered_.clear();
+    for (int c : covered)
+        if (!in_window[static_cast<std::size_t>(c)]) covered_.push_back({c, cut[5 * static_cast<std::size_t>(c)]});
+    covered_rhs_.resize(covered_.size());
 
     // The window's rows of the cut matrix, neighbours outside it dropped (zero there).
     std::vector<double> owned(5 * window_.size(), 0.0);
@@ -163,6 +177,12 @@ void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x)
     std::vector<double>&rhs = rhs_, &z = z_, &r = r_;
     std::fill(z.begin(), z.end(), 0.0);
     HYPRE_StructVectorGetBoxValues(b, lower_.data(), upper_.data(), rhs.data());
+    // The covered cells outside the window are coupled to nothing (A is block diagonal): set aside, solved last.
+    for (std::size_t k = 0; k < covered_.size(); ++k) {
+        const std::size_t c = static_cast<std::size_t>(covered_[k].cell);
+        covered_rhs_[k] = rhs[c];
+        rhs[c] = 0.0;
+    }
     // The window's solve leaves no residual inside the window; outside, its cells' values reach the next cells only.
     const Eigen::VectorXd& zw = window_solve(window_values(rhs));
     for (std::size_t k = 0; k < window_.size(); ++k)
@@ -180,8 +200,11 @@ void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x)
     direct_.solve(source_, correction_);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) z[static_cast<std::size_t>(j) * nx + i] += correction_(i, j);
+    for (const Covered& c : covered_) z[static_cast<std::size_t>(c.cell)] = 0.0;  // the whole grid's on the fluid only
     residual(rhs, z, r);
     add_window_solve(r, z);
+    for (std::size_t k = 0; k < covered_.size(); ++k)
+        z[static_cast<std::size_t>(covered_[k].cell)] = covered_rhs_[k] / covered_[k].diagonal;
     HYPRE_StructVectorSetBoxValues(x, lower_.data(), upper_.data(), z.data());
     HYPRE_StructVectorAssemble(x);
 }

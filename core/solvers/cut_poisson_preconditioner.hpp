@@ -13,6 +13,10 @@
 // is symmetric positive definite, so PCG runs on it (hypre's Struct PCG, the matrix products hypre's). One direct
 // solve per iteration. Measured on a model of the study's free fall (docs/performance.md): 6-8 iterations to a
 // relative residual of 1e-8 from a zero start at margin 6-16, against 164 with the direct solve alone.
+// Covered cells away from the surfaces have rows of their diagonal alone (no flux through a shut face), so A is
+// block diagonal: fluid and those cells. They stay out of the window and out of the whole-grid step (its residual
+// and correction zero there) and are solved by their diagonal, which keeps the preconditioner symmetric positive
+// definite; the window then covers the surfaces only, not the half of the grid below a plane.
 #include <HYPRE_struct_ls.h>
 
 #include <Eigen/SparseCholesky>
@@ -68,6 +72,13 @@ private:
         double coefficient;
     };
     std::vector<RingCoupling> ring_;
+    // The covered cells outside the window (a row of the diagonal alone): this rank's, with their diagonal.
+    struct Covered {
+        int cell;  // in this rank's box
+        double diagonal;
+    };
+    std::vector<Covered> covered_;
+    std::vector<double> covered_rhs_;
     Field2D source_, correction_;
     std::vector<double> volume_;         // of each owned cell
     std::vector<double> rhs_, z_, r_;    // apply()'s work, per owned cell
