@@ -226,11 +226,11 @@ std::vector<BodyForces> ImmersedBoundary::measure(const Velocity& vel, const Fie
     std::vector<BodyForces> out(bodies_.size());
     const double rho = settings_.density, depth = settings_.depth;
     forcing_->measure_slip(vel);
+    const double dt = flow_ ? flow_->previous_dt() : 0.0;  // the step just taken (0 before the first)
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const BodyForcing& f = step_forcing_[b];
         BodyForces& r = out[b];
-        const double dt = flow_ ? flow_->previous_dt() : 0.0;
         if (body.free()) {
             r.forcing = wrench_[b].force;
             r.forcing_torque = wrench_[b].torque;

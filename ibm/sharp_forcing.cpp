@@ -92,13 +92,14 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
             for (int i = i0; i <= i1; ++i) {
                 const Vec2 p = position(i, j);
                 const double phi = outline.signed_distance(body.to_body(p));
+                const double spacing = std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j));  // bounds a neighbour's distance
                 // A forcing face is at most one face spacing from the surface (sqrt 2 of a cell at a corner).
-                if (phi >= 1.5 * std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) continue;
+                if (phi >= 1.5 * spacing) continue;
                 // Reconstructed: beside the surface on the side the method sets (a neighbour across it).
                 const bool inside = phi < surface;
                 // Deeper inside than a neighbour's spacing (the distance is 1-Lipschitz): no neighbour across, the
                 // body's velocity alone (no surface point needed). Below a plane, half the grid.
-                if (inside && phi < surface - std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j))) {
+                if (inside && phi < surface - spacing) {
                     candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, p, Vec2(0.0, 0.0), false});
                     continue;
                 }

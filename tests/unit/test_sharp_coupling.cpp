@@ -142,10 +142,10 @@ TEST(SharpCoupling, TurnedRectangleIsCoupledExactlyInAllThreeMotions) {
 // square of the first test, accelerated from rest at a = -2 m/s^2 along y in steps of 5 ms (0.04 of a cell in all,
 // so no face changes class), reads the added mass the free square's coupling solves for, C_a 1.335 in this channel
 // (first test): -F_y / a = C_a m_f to within the ghost faces' share that the response leaves out (+7 % in the first
-// test's first step; measured here 1.400 to 1.446, +5 to +8 %), held to -3 / +12 %. The viscous drag is 0.4 % of
-// the force at the end (Re = |v| d / nu = 100). The rigid-body form it replaced took the faces inside as moving with
-// the body, where ghost faces hold mirror images, and met the projection's pressure a step late: it read C_a 0.108
-// in the first step and 1.51 after (+13 %).
+// test's first step; measured here 1.400 to 1.446, +5 to +8 %), held to -3 / +12 %. The viscous drag is small beside
+// it (estimated: C_D about 2 at Re = |v| d / nu = 100 at the end gives 10 N against 2800 N). The rigid-body form it
+// replaced took the faces inside as moving with the body, where ghost faces hold mirror images, and met the
+// projection's pressure a step late: it read C_a 0.108 in the first step and 1.51 after (+13 %).
 TEST(SharpCoupling, PrescribedBodyReadsTheFreeBodysAddedMass) {
     std::string text = falling_square_case(64, 128);
     text.erase(text.find("    density: 2500.0\n"), std::string("    density: 2500.0\n").size());  // not free
