@@ -113,13 +113,16 @@ std::vector<CaseKey> body_keys() {
          .when_key = "carrier",
          .when_values = {"immersed"},
          .meaning = "The grid follows this moving body along these axes (a window that follows the block, "
-                    "run/following_frame.hpp): between steps the grid moves by whole cells so that the body stays "
-                    "within a cell of where it started on it, and the domain is a window a few body lengths around "
-                    "it instead of its whole path. The followed axes must be uniform; the boundaries across the "
-                    "motion move with the window: an `inflow` at velocity [0, 0] is the water at rest ahead (give "
-                    "it 7 or more body sizes), an `outflow` lets the wake out behind at the speed relative to the "
-                    "window; no walls across the motion. Velocities, positions and fields are those of the fixed "
-                    "frame. One body at most."},
+                    "run/following_frame.hpp), and the domain is a window a few body lengths around it instead of "
+                    "its whole path. With `numerics.ibm.interface: sharp` the grid translates with the body, so "
+                    "that the body keeps its place against the cells (a sharp surface moving oblique to a grid at "
+                    "rest smears its boundary layer: docs/validation.md); with the diffuse interface it moves by "
+                    "whole cells between steps so that the body stays within a cell of where it started on it, "
+                    "and the followed axes must be uniform. The boundaries across the motion move with the "
+                    "window: an `inflow` at velocity [0, 0] is the water at rest ahead (give it 7 or more body "
+                    "sizes), an `outflow` lets the wake out behind at the speed relative to the window; no walls "
+                    "across the motion. Velocities, positions and fields are those of the fixed frame. One body "
+                    "in the case."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "

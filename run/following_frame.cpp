@@ -15,7 +15,9 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
         if (frame)
             throw std::invalid_argument("bodies." + bodies[b].name + ".follow: the grid already follows bodies." +
                                         bodies[frame->body()].name + ": one body at most");
-        frame.emplace(b, bodies[b].follow, bodies[b].centre, std::array<double, 2>{config.x.start, config.y.start});
+        const bool translate = config.ibm.interface == Interface::sharp;
+        frame.emplace(b, bodies[b].follow, bodies[b].centre, std::array<double, 2>{config.x.start, config.y.start},
+                      translate);
         for (int axis = 0; axis < 2; ++axis) {
             if (!bodies[b].follow[axis]) continue;
             if (const int s = wall_across(types, axis); s >= 0)
@@ -24,34 +26,58 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
                                             bodies[b].name + " would move with it: give `inflow` with velocity " +
                                             "[0, 0] (the water at rest ahead), `outflow`, or a periodic pair");
             // The grid moves by whole cells and keeps its spacings: every cell of the axis the same width.
-            if (!uniform_axis(Axis(axis_lines(axis == 0 ? config.x : config.y), false)))
+            if (!translate && !uniform_axis(Axis(axis_lines(axis == 0 ? config.x : config.y), false)))
                 throw std::invalid_argument(std::string("domain.") + (axis == 0 ? "x" : "y") +
                                             ": the grid following bodies." + bodies[b].name +
-                                            " moves by whole cells along it, so its cells must be equal (give "
-                                            "`cells` with the uniform spacing)");
+                                            " moves by whole cells along it with the diffuse interface, so its cells "
+                                            "must be equal (give `cells` with the uniform spacing, or "
+                                            "numerics.ibm.interface: sharp, whose grid translates)");
         }
     }
+    if (frame)
+        for (std::size_t other = 0; other < bodies.size(); ++other)
+            if (other != frame->body())
+                throw std::invalid_argument("bodies." + bodies[other].name + ": the grid follows bodies." +
+                                            bodies[frame->body()].name +
+                                            ", and another body would move against it (its surface is placed once "
+                                            "on the grid): one body in a case with a following grid");
     return frame;
 }
 
-void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
+double FollowingFrame::offset(const FlowSolver& flow, const Body& body, int axis) const {
+    // Where the body started on the grid, carried with the lines.
+    const Axis& along = axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
+    const double anchor = body_start_[axis] + (along.start() - domain_start_[axis]);
+    return body.state().centre[axis] - anchor;
+}
+
+void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body, double dt) const {
+    const Vec2 v = body.state().velocity;
+    if (translate_) {
+        // The body's velocity, and the drift the last step's change of it left, taken back over this step.
+        std::array<double, 2> w{0.0, 0.0};
+        for (int axis = 0; axis < 2; ++axis)
+            if (axes_[axis]) w[axis] = v[axis] + (dt > 0.0 ? offset(flow, body, axis) / dt : 0.0);
+        flow.set_frame_velocity(w);
+        return;
+    }
     bool moved = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!axes_[axis]) continue;
-        const Axis& along = axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
-        const double width = along.width(0);
-        // Where the body started on the grid, carried with the lines; the body within a cell of it.
-        auto offset = [&] {
-            const double anchor = body_start_[axis] + (along.start() - domain_start_[axis]);
-            return body.state().centre[axis] - anchor;
-        };
-        for (; offset() >= width; moved = true) flow.shift_one_cell(axis, +1);
-        for (; offset() <= -width; moved = true) flow.shift_one_cell(axis, -1);
+        const double width = (axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis()).width(0);
+        // The body within a cell of where it started on the grid.
+        for (; offset(flow, body, axis) >= width; moved = true) flow.shift_one_cell(axis, +1);
+        for (; offset(flow, body, axis) <= -width; moved = true) flow.shift_one_cell(axis, -1);
     }
     if (turbulence && moved) turbulence->shifted();
     // The window moves on average with the body: its outflow lets the wake out at the speed relative to that.
-    const Vec2 v = body.state().velocity;
     flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
+}
+
+void FollowingFrame::move(FlowSolver& flow, double dt) const {
+    if (!translate_) return;
+    const GridMotion& w = flow.grid_motion();
+    flow.translate_grid(w.axis[0].velocity * dt, w.axis[1].velocity * dt);
 }
 
 }  // namespace chute

@@ -1,19 +1,30 @@
 #pragma once
 // A grid that follows a moving immersed body (bodies.<body>.follow; issue "speed": the domain a few block lengths
-// around the block instead of its whole path). The grid stays at rest during a step, exactly the fixed grid of
-// the case, and between steps it moves by whole cells (FlowSolver::shift_one_cell) so that the body stays within
-// a cell of where it started on it: the fields keep their values in space, the row that leaves behind is dropped,
-// the one that enters ahead copies its neighbour (water at rest far ahead: an `inflow` at velocity [0, 0]).
+// around the block instead of its whole path). Two ways, by the carrier's interface:
 //
-// Why whole cells and not a grid translating with the body (the arbitrary Lagrangian-Eulerian form the body-fitted
-// carrier uses; the first version of this frame, 2026-11-25): on a translating grid the body keeps one place
-// against the cells for the whole run, and the immersed boundary's drag of a sharp-cornered body depends on that
-// place. The study's block, its edges on grid lines, fell 2.9 % faster than in the fixed domain; half a cell
-// lower, 1.0 % slower (docs/validation.md, "A window that moves by whole cells"). Moving by whole cells, the body
-// crosses the cells as on the fixed grid, and the flow near it is computed by the same discrete equations.
+// - Sharp interface: the grid translates with the body (the arbitrary Lagrangian-Eulerian form of the body-fitted
+//   carrier's translating grid, FlowSolver::translate_grid / set_frame_velocity): the unknowns stay the inertial
+//   velocity and pressure, the convective fluxes see the velocity relative to the moving faces, a rigid translation
+//   keeps every cell's area. The body keeps its place against the cells, so its thin boundary layer is not carried
+//   across the grid. On a grid at rest a sharp surface moving oblique to the grid lines smears its boundary layer
+//   over the cells it crosses: the study's block moved at 2 m/s along its diagonal read 34 % less drag than held in
+//   the same stream (t = 0.1-0.2 s), and an accelerated one 23 % less than the body-fitted block, converging at
+//   order 0.5 at most; on the translating grid it reads the held drag to 0.1 % (docs/validation.md, "Sharp
+//   interface", ninth step). Each step the grid's velocity is the body's at the start of the step plus what brings
+//   the body back to its place on the grid over the step (a free body's update moves it by dt (v^{n+1} - v^n) / 2
+//   from where a grid at v^n takes it), so the drift never accumulates and no field is ever shifted.
+// - Diffuse interface: between steps the grid moves by whole cells (FlowSolver::shift_one_cell) so that the body
+//   stays within a cell of where it started on it: the fields keep their values in space, the row that leaves behind
+//   is dropped, the one that enters ahead copies its neighbour (water at rest far ahead: an `inflow` at velocity
+//   [0, 0]). The grid is at rest during a step, the body crosses the cells as on the fixed grid and the flow near it
+//   is computed by the same discrete equations. (Translating, the diffuse body kept one place against the cells, and
+//   its drag depends on that place: the study's block, its edges on grid lines, fell 2.9 % faster than in the fixed
+//   domain; half a cell lower, 1.0 % slower; docs/validation.md, "A window that moves by whole cells".) The followed
+//   axis must be uniform (the lines a shift keeps are copied, so the spacings and the pressure solver's matrix do
+//   not change).
 //
-// The followed axis must be uniform (the lines a shift keeps are copied, so the spacings and the pressure
-// solver's matrix do not change), and the sides across the motion open (inflow, outflow or periodic).
+// Either way the sides across the motion are open (inflow, outflow or periodic), and the followed body is the only
+// one (a fixed body would move against the grid; its surface is placed once).
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -28,23 +39,32 @@ namespace chute {
 class FollowingFrame {
 public:
     FollowingFrame(std::size_t body, std::array<bool, 2> axes, std::array<double, 2> body_start,
-                   std::array<double, 2> domain_start)
-        : body_(body), axes_(axes), body_start_(body_start), domain_start_(domain_start) {}
+                   std::array<double, 2> domain_start, bool translate)
+        : body_(body), axes_(axes), body_start_(body_start), domain_start_(domain_start), translate_(translate) {}
     // The followed body of a case, if any. std::invalid_argument, naming the key, when two bodies ask to be followed,
     // a wall or slip side lies across the motion (it would move with the grid: give an inflow at rest ahead, an
-    // outflow behind, or a periodic pair), or a followed axis is not uniform.
+    // outflow behind, or a periodic pair), another body is in the case, or (whole cells) a followed axis is not
+    // uniform.
     static std::optional<FollowingFrame> of(const CaseConfig& config);
 
     std::size_t body() const { return body_; }
-    // Before a step: move the grid by whole cells until the body is less than a cell from where it started on the
-    // grid (the start's place on the lines is found again from the lines, so a restart needs nothing more). The
-    // turbulence model's walls, ghosts and corner eddy viscosity are set again after a move.
-    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
+    bool translates() const { return translate_; }
+    // Before a step of `dt` (0: not known). Translating: the grid's velocity for the step (set after a step and a
+    // restore too, with the last step's dt, so that the next step's limit sees the velocities it will have). Whole
+    // cells: move the grid until the body is less than a cell from where it started on the grid; the turbulence
+    // model's walls, ghosts and corner eddy viscosity are set again after a move. Either way the start's place on
+    // the lines is found again from the lines, so a restart needs nothing more.
+    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body, double dt) const;
+    // After the step's prediction (translating): the lines to where the step's fluxes, relative to them, took them.
+    void move(FlowSolver& flow, double dt) const;
 
 private:
     std::size_t body_;
     std::array<bool, 2> axes_;
     std::array<double, 2> body_start_, domain_start_;  // the case's: where the body starts on the grid's first lines
+    bool translate_;                                   // the grid translates (sharp), else moves by whole cells
+    // The body's distance along an axis from where it started on the grid.
+    double offset(const FlowSolver& flow, const Body& body, int axis) const;
 };
 
 }  // namespace chute

@@ -14,10 +14,11 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     {
         StageTimer::Scope timed(timer, "bodies");
         if (const FollowingFrame* frame = model.following_frame())
-            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
+            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()], dt);
         carrier.begin_step(flow.velocity());
     }
     dt = flow.predict(dt);
+    if (const FollowingFrame* frame = model.following_frame()) frame->move(flow, dt);  // translating: the lines
     {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.predict(t, dt);
@@ -50,6 +51,10 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         StageTimer::Scope timed(timer, "turbulence");
         turbulence->update(dt);
     }
+    // A translating grid's velocity for the next step, so that its limit (Model::stable_dt) sees the relative
+    // velocities the step will have; a restart sets it the same way (restore_run).
+    if (const FollowingFrame* frame = model.following_frame(); frame && frame->translates())
+        frame->follow(flow, model.turbulence(), model.bodies()[frame->body()], dt);
     return stats;
 }
 
