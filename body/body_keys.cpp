@@ -122,7 +122,7 @@ std::vector<CaseKey> body_keys() {
                     "window: an `inflow` at velocity [0, 0] is the water at rest ahead (give it 7 or more body "
                     "sizes), an `outflow` lets the wake out behind at the speed relative to the window; no walls "
                     "across the motion. Velocities, positions and fields are those of the fixed frame. One body "
-                    "in the case."},
+                    "at most."},
         {.path = "bodies.<body>.motion",
          .type = K::section,
          .meaning = "Prescribed motion of the centre and angle (closed shapes only; planes and segments are "

@@ -72,6 +72,7 @@ private:
     Field2D owner_u_, owner_v_, shut_middle_u_, shut_middle_v_;
     Vec2 shut_point(bool is_u, int i, int j, double middle) const;  // a face's point `middle` along it
     bool done_ = false;
+    long long placed_lines_ = -1;  // Grid::lines_version() at the last update
 };
 
 }  // namespace chute

@@ -56,6 +56,7 @@ void DirectForcing::place_markers() {
     sv_ = delta_stencils(grid_, config_.kernel, Staggering::v_face, world_);
     find_interior_faces();
     placed_ = true;
+    placed_lines_ = grid_.lines_version();
 }
 
 void DirectForcing::find_interior_faces() {
@@ -138,7 +139,7 @@ void DirectForcing::begin_step() {
 
 void DirectForcing::apply(Velocity& star, double dt) {
     const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
-    if (!placed_ || any_moves) place_markers();
+    if (!placed_ || any_moves || placed_lines_ != grid_.lines_version()) place_markers();
     const std::size_t n = world_.size();
     std::vector<Vec2> target(n), force_sum(n, Vec2::Zero());
     for (std::size_t b = 0; b < bodies_.size(); ++b)

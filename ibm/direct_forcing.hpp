@@ -73,6 +73,7 @@ private:
     };
     std::vector<std::vector<InteriorFace>> interior_;  // per body
     bool placed_ = false;
+    long long placed_lines_ = -1;  // Grid::lines_version() at the last place_markers()
     std::vector<BodyForcing> result_;
     std::vector<BodyState> followed_;  // the accelerations the volume forcing followed so far in this step
 };

@@ -67,6 +67,7 @@ private:
     bool static_scanned_ = false;
     std::vector<Stencil> su_, sv_, sk_;
     bool located_ = false;
+    long long located_lines_ = -1;  // Grid::lines_version() at the last locate()
 };
 
 }  // namespace chute

@@ -209,6 +209,7 @@ void SharpForcing::classify() {
         }
     }
     placed_ = true;
+    classified_lines_ = grid_.lines_version();
 }
 
 std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, int i, int j) const {
@@ -443,12 +444,14 @@ bool SharpForcing::any_moves() const {
     return std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
 }
 
+bool SharpForcing::classified() const { return placed_ && !any_moves() && classified_lines_ == grid_.lines_version(); }
+
 void SharpForcing::begin_step() {
-    if (!placed_ || any_moves()) classify();
+    if (!classified()) classify();
 }
 
 void SharpForcing::apply(Velocity& star, double dt) {
-    if (!placed_ || any_moves()) classify();
+    if (!classified()) classify();
     std::vector<double> sums(3 * bodies_.size(), 0.0);  // momentum rate x, y and torque rate per body
     auto account = [&](const ForcedFace& f, bool is_u, double change) {
         const double rate = change * f.volume / dt;

@@ -162,6 +162,8 @@ private:
         std::vector<char> inside;           // ghost faces, per face key: 1 inside a body at the last classification
     };
     bool any_moves() const;
+    // Classified where the bodies are now: none moves and the grid did not move under them since.
+    bool classified() const;
     void classify();
     void find_covered_cells();
     double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
@@ -202,6 +204,7 @@ private:
     std::size_t first_covered_ = 0;
     Field2D uncovered_;  // 0 in covered_ cells, 1 elsewhere (owned cells)
     bool placed_ = false;
+    long long classified_lines_ = -1;  // Grid::lines_version() at the last classify()
     std::vector<BodyForcing> result_;
     Velocity open_flux_;   // open_flux(): nonzero only on the faces listed below
     Velocity wall_faces_;  // wall_faces()

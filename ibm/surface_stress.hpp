@@ -59,6 +59,7 @@ private:
     std::vector<double> h_, wall_pressure_;
     std::vector<std::vector<Stencil>> sp_, su_, sv_;  // [probe][point]
     bool placed_ = false;
+    long long placed_lines_ = -1;  // Grid::lines_version() at the last place()
 };
 
 // Weights w_k of the least-squares fit f(d) = sum_m c_m d^(powers_m) through (d_k, f_k): the first coefficient

@@ -34,13 +34,6 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
                                             "numerics.ibm.interface: sharp, whose grid translates)");
         }
     }
-    if (frame)
-        for (std::size_t other = 0; other < bodies.size(); ++other)
-            if (other != frame->body())
-                throw std::invalid_argument("bodies." + bodies[other].name + ": the grid follows bodies." +
-                                            bodies[frame->body()].name +
-                                            ", and another body would move against it (its surface is placed once "
-                                            "on the grid): one body in a case with a following grid");
     return frame;
 }
 

@@ -23,8 +23,9 @@
 //   axis must be uniform (the lines a shift keeps are copied, so the spacings and the pressure solver's matrix do
 //   not change).
 //
-// Either way the sides across the motion are open (inflow, outflow or periodic), and the followed body is the only
-// one (a fixed body would move against the grid; its surface is placed once).
+// Either way the sides across the motion are open (inflow, outflow or periodic). Other bodies (a fixed plane below a
+// falling block) move against the grid: what the carriers place once on the grid for a static body is placed again
+// after each move of the lines (Grid::lines_version).
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -43,8 +44,7 @@ public:
         : body_(body), axes_(axes), body_start_(body_start), domain_start_(domain_start), translate_(translate) {}
     // The followed body of a case, if any. std::invalid_argument, naming the key, when two bodies ask to be followed,
     // a wall or slip side lies across the motion (it would move with the grid: give an inflow at rest ahead, an
-    // outflow behind, or a periodic pair), another body is in the case, or (whole cells) a followed axis is not
-    // uniform.
+    // outflow behind, or a periodic pair), or (whole cells) a followed axis is not uniform.
     static std::optional<FollowingFrame> of(const CaseConfig& config);
 
     std::size_t body() const { return body_; }

@@ -82,6 +82,7 @@ void Grid::set_lines(std::vector<double> x_lines, std::vector<double> y_lines) {
     x_.set_lines(std::move(x_lines));
     y_.set_lines(std::move(y_lines));
     update_geometry();
+    ++lines_version_;
 }
 
 }  // namespace chute

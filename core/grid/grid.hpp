@@ -77,6 +77,9 @@ public:
     // Move or replace grid lines; recomputes every local geometry array. Cell counts must not change
     // (inserting lines needs fields to be remapped, which is the ALE band's job).
     void set_lines(std::vector<double> x_lines, std::vector<double> y_lines);
+    // Counts the calls of set_lines(): what is placed once on the lines (a static immersed surface's faces, markers
+    // and wall cells) is placed again when it changes (a grid that follows a body moves under a fixed plane).
+    long long lines_version() const { return lines_version_; }
 
 private:
     void update_geometry();
@@ -89,6 +92,7 @@ private:
     int coords_[2] = {0, 0};
     std::array<int, 4> neighbour_{};
     std::array<bool, 4> touches_{};
+    long long lines_version_ = 0;
 };
 
 }  // namespace chute

@@ -312,3 +312,29 @@ TEST(CutFaces, CircleFacesAreCutWithinItsReach) {
     EXPECT_LT(maxima[0], 0.1 * h);
     EXPECT_LT(maxima[1], 1e-8 * h);
 }
+
+// A static surface is placed once (CutFaces::update returns false while nothing moves) and again when the grid moves
+// under it (a window that follows another body, run/following_frame.hpp: Grid::lines_version). After the lines
+// translate by 0.3 of a cell the apertures equal those of a placement made afresh on the moved grid, bit for bit.
+TEST(CutFaces, StaticSurfaceIsPlacedAgainWhenTheGridMoves) {
+    Grid grid(Axis(uniform_lines(0.0, 1.0, 40), false), Axis(uniform_lines(0.0, 1.0, 36), false), MPI_COMM_WORLD);
+    const std::vector<Body> bodies{plane_body(30.0)};
+    CutFaces cut(grid, bodies);
+    EXPECT_TRUE(cut.update());
+    EXPECT_FALSE(cut.update());  // static, the grid unmoved
+    std::vector<double> x = grid.x_axis().lines(), y = grid.y_axis().lines();
+    for (double& l : x) l += 0.3 / 40.0;
+    for (double& l : y) l -= 0.3 / 36.0;
+    grid.set_lines(x, y);
+    EXPECT_TRUE(cut.update());
+    CutFaces placed(grid, bodies);
+    placed.update();
+    int differ = 0;
+    for (int j = -1; j <= grid.ny(); ++j)
+        for (int i = -1; i <= grid.nx(); ++i)
+            differ += cut.aperture_u()(i, j) != placed.aperture_u()(i, j) ||
+                      cut.aperture_v()(i, j) != placed.aperture_v()(i, j) ||
+                      cut.open_cells()(i, j) != placed.open_cells()(i, j);
+    MPI_Allreduce(MPI_IN_PLACE, &differ, 1, MPI_INT, MPI_SUM, grid.comm());
+    EXPECT_EQ(differ, 0);
+}
