@@ -10,9 +10,10 @@
 //   over the cells it crosses: the study's block moved at 2 m/s along its diagonal read 34 % less drag than held in
 //   the same stream (t = 0.1-0.2 s), and an accelerated one 23 % less than the body-fitted block, converging at
 //   order 0.5 at most; on the translating grid it reads the held drag to 0.1 % (docs/validation.md, "Sharp
-//   interface", ninth step). Each step the grid's velocity is the body's at the start of the step plus what brings
-//   the body back to its place on the grid over the step (a free body's update moves it by dt (v^{n+1} - v^n) / 2
-//   from where a grid at v^n takes it), so the drift never accumulates and no field is ever shifted.
+//   interface", ninth step). Each step the grid's velocity is the body's at the start of the step, and after the
+//   step the lines are moved by what separates the body from its place on them (a free body's update moves it by
+//   dt (v^{n+1} - v^n) / 2 from where a grid at v^n takes it; the fields stay on their lines, as on the body-fitted
+//   carrier's translating grid), so the body keeps its place on the grid to round-off.
 // - Diffuse interface: between steps the grid moves by whole cells (FlowSolver::shift_one_cell) so that the body
 //   stays within a cell of where it started on it: the fields keep their values in space, the row that leaves behind
 //   is dropped, the one that enters ahead copies its neighbour (water at rest far ahead: an `inflow` at velocity
@@ -49,12 +50,13 @@ public:
 
     std::size_t body() const { return body_; }
     bool translates() const { return translate_; }
-    // Before a step of `dt` (0: not known). Translating: the grid's velocity for the step (set after a step and a
-    // restore too, with the last step's dt, so that the next step's limit sees the velocities it will have). Whole
+    // Before a step. Translating: the lines to the body's place on them and the grid's velocity for the step (also
+    // after a step and a restore, so that the next step's limit sees the velocities it will have; a second call finds
+    // nothing to move). Whole
     // cells: move the grid until the body is less than a cell from where it started on the grid; the turbulence
     // model's walls, ghosts and corner eddy viscosity are set again after a move. Either way the start's place on
     // the lines is found again from the lines, so a restart needs nothing more.
-    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body, double dt) const;
+    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
     // After the step's prediction (translating): the lines to where the step's fluxes, relative to them, took them.
     void move(FlowSolver& flow, double dt) const;
 

@@ -89,7 +89,7 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     solver.refresh_ghosts();  // a hole's faces move with its restored body
     if (KEpsilon* turbulence = model.turbulence()) turbulence->restored(eddy_read);
     if (const FollowingFrame* frame = model.following_frame(); frame && frame->translates())
-        frame->follow(solver, model.turbulence(), model.bodies()[frame->body()], solver.previous_dt());
+        frame->follow(solver, model.turbulence(), model.bodies()[frame->body()]);
 }
 
 }  // namespace chute

@@ -14,7 +14,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     {
         StageTimer::Scope timed(timer, "bodies");
         if (const FollowingFrame* frame = model.following_frame())
-            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()], dt);
+            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
         carrier.begin_step(flow.velocity());
     }
     dt = flow.predict(dt);
@@ -54,7 +54,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     // A translating grid's velocity for the next step, so that its limit (Model::stable_dt) sees the relative
     // velocities the step will have; a restart sets it the same way (restore_run).
     if (const FollowingFrame* frame = model.following_frame(); frame && frame->translates())
-        frame->follow(flow, model.turbulence(), model.bodies()[frame->body()], dt);
+        frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
     return stats;
 }
 
