@@ -48,21 +48,11 @@ double FollowingFrame::offset(const FlowSolver& flow, const Body& body, int axis
 void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
     const Vec2 v = body.state().velocity;
     if (translate_) {
-        // The lines to the body's place on them (the step's update moved it by dt (v^{n+1} - v^n) / 2 from where a grid
-        // at v^n took them), then the body's velocity for the step. The place is kept to round-off, not to a drift
-        // of microns: a side on a grid line stays on it (a side jittering across a line by the drift switched its
-        // faces between shut and open every step: the window's free fall spiked to 6 times its weight).
-        // (Moves below 1e-12 of a cell are round-off left by the last one: a second call leaves the lines as they are,
-        // so a restart, which calls it once more, repeats the straight run bit for bit.)
-        std::array<double, 2> shift{0.0, 0.0}, w{0.0, 0.0};
-        for (int axis = 0; axis < 2; ++axis) {
-            if (!axes_[axis]) continue;
-            const double drift = offset(flow, body, axis);
-            const double cell = (axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis()).width(0);
-            if (std::abs(drift) > 1e-12 * cell) shift[axis] = drift;
-            w[axis] = v[axis];
-        }
-        if (shift[0] != 0.0 || shift[1] != 0.0) flow.translate_grid(shift[0], shift[1]);
+        // The lines to the body's place after the step's update, then the body's velocity for the step.
+        place(flow, body);
+        std::array<double, 2> w{0.0, 0.0};
+        for (int axis = 0; axis < 2; ++axis)
+            if (axes_[axis]) w[axis] = v[axis];
         flow.set_frame_velocity(w);
         return;
     }
@@ -79,10 +69,23 @@ void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& 
     flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
 }
 
-void FollowingFrame::move(FlowSolver& flow, double dt) const {
+void FollowingFrame::place(FlowSolver& flow, const Body& body) const {
     if (!translate_) return;
-    const GridMotion& w = flow.grid_motion();
-    flow.translate_grid(w.axis[0].velocity * dt, w.axis[1].velocity * dt);
+    // The lines moved by what separates the body from its place on them; the fields stay on their lines. The place
+    // is kept to round-off, not to a drift of microns: a side on a grid line stays on it (a side jittering across a
+    // line switched its faces between shut and open: the window's free fall spiked to 6 times its weight with a
+    // drift taken back by the grid's velocity, and rippled by 3 % at its terminal speed with the body's predicted
+    // place a dt^2 a / 2 off the lines). Moves below 1e-12 of a cell are round-off left by the last one: a second
+    // call leaves the lines as they are, so a restart, which calls it once more, repeats the straight run bit for
+    // bit.
+    std::array<double, 2> shift{0.0, 0.0};
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!axes_[axis]) continue;
+        const double drift = offset(flow, body, axis);
+        const double cell = (axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis()).width(0);
+        if (std::abs(drift) > 1e-12 * cell) shift[axis] = drift;
+    }
+    if (shift[0] != 0.0 || shift[1] != 0.0) flow.translate_grid(shift[0], shift[1]);
 }
 
 }  // namespace chute

@@ -10,10 +10,11 @@
 //   over the cells it crosses: the study's block moved at 2 m/s along its diagonal read 34 % less drag than held in
 //   the same stream (t = 0.1-0.2 s), and an accelerated one 23 % less than the body-fitted block, converging at
 //   order 0.5 at most; on the translating grid it reads the held drag to 0.1 % (docs/validation.md, "Sharp
-//   interface", ninth step). Each step the grid's velocity is the body's at the start of the step, and after the
-//   step the lines are moved by what separates the body from its place on them (a free body's update moves it by
-//   dt (v^{n+1} - v^n) / 2 from where a grid at v^n takes it; the fields stay on their lines, as on the body-fitted
-//   carrier's translating grid), so the body keeps its place on the grid to round-off.
+//   interface", ninth step). Each step the fluxes see the grid at the body's velocity at the start of the step, and
+//   the lines are moved to the body's place on them once the bodies are placed at the step's end (a free body's
+//   prediction is v dt + a dt^2 / 2 away) and again after its update (dt (v^{n+1} - v^n) / 2 from the prediction);
+//   the fields stay on their lines, as on the body-fitted carrier's translating grid. So the body keeps its place on
+//   the grid to round-off.
 // - Diffuse interface: between steps the grid moves by whole cells (FlowSolver::shift_one_cell) so that the body
 //   stays within a cell of where it started on it: the fields keep their values in space, the row that leaves behind
 //   is dropped, the one that enters ahead copies its neighbour (water at rest far ahead: an `inflow` at velocity
@@ -57,8 +58,9 @@ public:
     // model's walls, ghosts and corner eddy viscosity are set again after a move. Either way the start's place on
     // the lines is found again from the lines, so a restart needs nothing more.
     void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
-    // After the step's prediction (translating): the lines to where the step's fluxes, relative to them, took them.
-    void move(FlowSolver& flow, double dt) const;
+    // Translating: the lines to the body's place on them (after the bodies are placed at the step's end, and after
+    // the step); the fields stay on their lines.
+    void place(FlowSolver& flow, const Body& body) const;
 
 private:
     std::size_t body_;

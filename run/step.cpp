@@ -18,11 +18,12 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         carrier.begin_step(flow.velocity());
     }
     dt = flow.predict(dt);
-    if (const FollowingFrame* frame = model.following_frame()) frame->move(flow, dt);  // translating: the lines
     {
         StageTimer::Scope timed(timer, "bodies");
         free_bodies.predict(t, dt);
         carrier.place(t + dt);
+        // A translating window's lines with the body, before its surface is imposed there.
+        if (const FollowingFrame* frame = model.following_frame()) frame->place(flow, model.bodies()[frame->body()]);
         carrier.impose(flow.predicted(), dt);
     }
     StepStats stats = flow.project();
