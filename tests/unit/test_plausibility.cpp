@@ -80,11 +80,22 @@ TEST(Plausibility, GravityPointingUpOrTooStrong) {
     expect_warning({"gravity=[0, -981]"}, "gravity", "more than 10 g");
 }
 
-// The sharp interface where it is not validated yet (docs/limitations.md): the free fall (k-epsilon, a moving body)
-// gets both warnings; a fixed body in laminar flow none.
+// The sharp interface where it is not validated yet (docs/limitations.md): the free fall (k-epsilon, a body moving
+// across a grid at rest) gets both warnings; a fixed body in laminar flow none, and the free fall in a window that
+// translates with the block along x and y none.
 TEST(Plausibility, SharpInterfaceOutsideItsValidationIsNamed) {
     expect_warning({"numerics.ibm.interface=sharp"}, "numerics.ibm.interface", "turbulence.model");
-    expect_warning({"numerics.ibm.interface=sharp"}, "numerics.ibm.interface", "moving body");
+    expect_warning({"numerics.ibm.interface=sharp"}, "bodies.block.follow", "grid at rest");
+    const auto window = plausibility_warnings(
+        load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_block" / "window.yaml",
+                  {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost", "bodies.block.follow=xy",
+                   "boundaries.left={type: inflow, velocity: [0.0, 0.0]}", "boundaries.right={type: outflow}"}));
+    EXPECT_TRUE(window.empty()) << window.front();
+    // Following y only, the block free in x still crosses the x lines.
+    const auto along_y =
+        plausibility_warnings(load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_block" / "window.yaml",
+                                        {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost"}));
+    EXPECT_EQ(along_y.size(), 1u);
     const auto w =
         plausibility_warnings(load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "schaefer_turek_2d1" / "case.yaml",
                                         {"numerics.ibm.interface=sharp"}));
