@@ -40,33 +40,31 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
 
 double FollowingFrame::offset(const FlowSolver& flow, const Body& body, int axis) const {
     // Where the body started on the grid, carried with the lines.
-    const Axis& along = axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
-    const double anchor = body_start_[axis] + (along.start() - domain_start_[axis]);
+    const double anchor = body_start_[axis] + (along(flow, axis).start() - domain_start_[axis]);
     return body.state().centre[axis] - anchor;
 }
 
-void FollowingFrame::follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
-    const Vec2 v = body.state().velocity;
-    if (translate_) {
-        // The lines to the body's place after the step's update, then the body's velocity for the step.
-        place(flow, body);
-        std::array<double, 2> w{0.0, 0.0};
-        for (int axis = 0; axis < 2; ++axis)
-            if (axes_[axis]) w[axis] = v[axis];
-        flow.set_frame_velocity(w);
-        return;
-    }
+void FollowingFrame::before_step(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const {
+    if (translate_) return;
     bool moved = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!axes_[axis]) continue;
-        const double width = (axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis()).width(0);
+        const double width = along(flow, axis).width(0);
         // The body within a cell of where it started on the grid.
         for (; offset(flow, body, axis) >= width; moved = true) flow.shift_one_cell(axis, +1);
         for (; offset(flow, body, axis) <= -width; moved = true) flow.shift_one_cell(axis, -1);
     }
     if (turbulence && moved) turbulence->shifted();
     // The window moves on average with the body: its outflow lets the wake out at the speed relative to that.
+    const Vec2 v = body.state().velocity;
     flow.set_boundary_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
+}
+
+void FollowingFrame::after_step(FlowSolver& flow, const Body& body) const {
+    if (!translate_) return;
+    place(flow, body);
+    const Vec2 v = body.state().velocity;
+    flow.set_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
 }
 
 void FollowingFrame::place(FlowSolver& flow, const Body& body) const {
@@ -82,7 +80,7 @@ void FollowingFrame::place(FlowSolver& flow, const Body& body) const {
     for (int axis = 0; axis < 2; ++axis) {
         if (!axes_[axis]) continue;
         const double drift = offset(flow, body, axis);
-        const double cell = (axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis()).width(0);
+        const double cell = along(flow, axis).width(0);
         if (std::abs(drift) > 1e-12 * cell) shift[axis] = drift;
     }
     if (shift[0] != 0.0 || shift[1] != 0.0) flow.translate_grid(shift[0], shift[1]);

@@ -51,16 +51,18 @@ public:
 
     std::size_t body() const { return body_; }
     bool translates() const { return translate_; }
-    // Before a step. Translating: the lines to the body's place on them and the grid's velocity for the step (also
-    // after a step and a restore, so that the next step's limit sees the velocities it will have; a second call finds
-    // nothing to move). Whole
-    // cells: move the grid until the body is less than a cell from where it started on the grid; the turbulence
-    // model's walls, ghosts and corner eddy viscosity are set again after a move. Either way the start's place on
-    // the lines is found again from the lines, so a restart needs nothing more.
-    void follow(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
-    // Translating: the lines to the body's place on them (after the bodies are placed at the step's end, and after
-    // the step); the fields stay on their lines.
+    // Before a step, whole cells: move the grid until the body is less than a cell from where it started on it;
+    // the turbulence model's walls, ghosts and corner eddy viscosity are set again after a move. Translating:
+    // nothing (after_step() left the grid with the body).
+    void before_step(FlowSolver& flow, KEpsilon* turbulence, const Body& body) const;
+    // Translating: the lines to the body's place on them, once the bodies are placed at the step's end; the fields
+    // stay on their lines. Whole cells: nothing.
     void place(FlowSolver& flow, const Body& body) const;
+    // Translating: the lines to the body's place after the step's update and the grid's velocity for the next step,
+    // so that its limit sees the relative velocities the step will have (also after the model is built and after a
+    // restore; a second call finds nothing to move). Whole cells: nothing.
+    // Either way the start's place on the lines is found again from the lines, so a restart needs nothing more.
+    void after_step(FlowSolver& flow, const Body& body) const;
 
 private:
     std::size_t body_;
@@ -69,6 +71,9 @@ private:
     bool translate_;                                   // the grid translates (sharp), else moves by whole cells
     // The body's distance along an axis from where it started on the grid.
     double offset(const FlowSolver& flow, const Body& body, int axis) const;
+    static const Axis& along(const FlowSolver& flow, int axis) {
+        return axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
+    }
 };
 
 }  // namespace chute

@@ -51,7 +51,19 @@ Model::Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier
     if (config_.turbulence.model == TurbulenceModelType::k_epsilon)
         turbulence_ = std::make_unique<KEpsilon>(k_epsilon_settings(config_), *flow_, *carrier_);
     // A translating grid moves with the body from the first step's limit on (run/following_frame.hpp).
-    if (frame_ && frame_->translates()) frame_->follow(*flow_, turbulence_.get(), bodies_[frame_->body()]);
+    window_after_step();
+}
+
+void Model::window_before_step() {
+    if (frame_) frame_->before_step(*flow_, turbulence_.get(), bodies_[frame_->body()]);
+}
+
+void Model::window_to_placed_body() {
+    if (frame_) frame_->place(*flow_, bodies_[frame_->body()]);
+}
+
+void Model::window_after_step() {
+    if (frame_) frame_->after_step(*flow_, bodies_[frame_->body()]);
 }
 
 double Model::stable_dt() const {

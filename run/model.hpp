@@ -40,8 +40,12 @@ public:
     const FreeBodies& free_bodies() const { return *free_; }
     KEpsilon* turbulence() { return turbulence_.get(); }
     const KEpsilon* turbulence() const { return turbulence_.get(); }
-    // The grid following a body (bodies.<body>.follow), null if it stays.
-    FollowingFrame* following_frame() { return frame_ ? &*frame_ : nullptr; }
+    // The following grid brought to its body at the step's three moments (run/following_frame.hpp): before the step
+    // (whole cells), once the bodies are placed at its end and after it (translating; after_step also once the
+    // model is built and after a restore). Nothing when no body is followed.
+    void window_before_step();
+    void window_to_placed_body();
+    void window_after_step();
 
 private:
     CaseConfig config_;

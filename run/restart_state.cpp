@@ -88,8 +88,7 @@ void restore_run(Model& model, const std::filesystem::path& checkpoint) {
     model.carrier().place(solver.time());
     solver.refresh_ghosts();  // a hole's faces move with its restored body
     if (KEpsilon* turbulence = model.turbulence()) turbulence->restored(eddy_read);
-    if (const FollowingFrame* frame = model.following_frame(); frame && frame->translates())
-        frame->follow(solver, model.turbulence(), model.bodies()[frame->body()]);
+    model.window_after_step();
 }
 
 }  // namespace chute

@@ -13,8 +13,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
 
     {
         StageTimer::Scope timed(timer, "bodies");
-        if (const FollowingFrame* frame = model.following_frame())
-            frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
+        model.window_before_step();
         carrier.begin_step(flow.velocity());
     }
     dt = flow.predict(dt);
@@ -23,7 +22,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
         free_bodies.predict(t, dt);
         carrier.place(t + dt);
         // A translating window's lines with the body, before its surface is imposed there.
-        if (const FollowingFrame* frame = model.following_frame()) frame->place(flow, model.bodies()[frame->body()]);
+        model.window_to_placed_body();
         carrier.impose(flow.predicted(), dt);
     }
     StepStats stats = flow.project();
@@ -54,8 +53,7 @@ StepStats take_step(Model& model, double dt, StageTimer* timer) {
     }
     // A translating grid's velocity for the next step, so that its limit (Model::stable_dt) sees the relative
     // velocities the step will have; a restart sets it the same way (restore_run).
-    if (const FollowingFrame* frame = model.following_frame(); frame && frame->translates())
-        frame->follow(flow, model.turbulence(), model.bodies()[frame->body()]);
+    model.window_after_step();
     return stats;
 }
 

@@ -386,6 +386,50 @@ TEST(Turbulence, StudyBlockFallsOnTheSharpCarrierAsBodyFitted) {
     EXPECT_NEAR(sharp, layers, 0.01 * layers);
 }
 
+// The same block shedding (the sharp-corners issue's second free-fall criterion): `initial.perturbation` 0.05 m/s
+// breaks the mirror symmetry, x locked, both carriers on the body-fitted run's grid (clustered in x and y, 200 x 251
+// cells), the grid translating with the block along y (the body-fitted grid by carrying the hole, the sharp one by
+// `follow: y`), to t = 8 s; the wake takes until t = 4 s to settle, so the mean is over t = 4-8 s (14 shedding
+// periods). Measured 2026-11-28: sharp 2.0682 m/s against 2.0768 (-0.41 %), lateral force rms 542 N against 527 N
+// (+2.8 %). On a grid at rest along y the sharp block fell 2.1 % fast and shed 23 % more weakly (its faces crossing
+// the cells smear the boundary layer: docs/validation.md, "Sharp interface", ninth step). Held to the issue's 1 %;
+// the lateral force to 10 % (the issue's C_L rms criterion for the Lyn square). Slow: about 5 minutes on 2 ranks.
+TEST(Turbulence, StudyBlockShedsOnTheSharpCarrierAsBodyFitted) {
+    struct Shedding {
+        double speed, lateral_rms;
+    };
+    auto shedding = [](const std::vector<std::string>& carrier) {
+        std::vector<std::string> set = {"time.end=8", "initial.type=uniform", "initial.velocity=[0.0, 0.0]",
+                                        "initial.perturbation=0.05"};
+        set.insert(set.end(), carrier.begin(), carrier.end());
+        BodyRun run(load_case(kExamples + "free_fall_block/body_fitted.yaml", set), MPI_COMM_WORLD);
+        double distance = 0.0, duration = 0.0, impulse = 0.0, square = 0.0;  // over t = 4-8 s
+        while (run.solver.time() < 8.0 - 1e-12) {
+            const double y0 = run.carrier.bodies()[0].state().centre.y();
+            const double t0 = run.solver.time();
+            const double lateral = run.step()[0].forcing.x();
+            if (t0 < 4.0) continue;
+            const double dt = run.solver.time() - t0;
+            distance += y0 - run.carrier.bodies()[0].state().centre.y();
+            duration += dt;
+            impulse += lateral * dt;
+            square += lateral * lateral * dt;
+        }
+        const double mean = impulse / duration;
+        const Shedding s{distance / duration, std::sqrt(square / duration - mean * mean)};
+        if (root()) std::printf("mean speed over t = 4-8 s %.4f m/s, lateral force rms %.0f N\n", s.speed, s.lateral_rms);
+        return s;
+    };
+    const Shedding sharp = shedding({"bodies.block.carrier=immersed", "bodies.block.follow=y",
+                                     "numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost"});
+    const Shedding fitted = shedding({});
+    if (root())
+        std::printf("sharp against body-fitted: speed %+.2f %%, lateral force rms %+.1f %%\n",
+                    100.0 * (sharp.speed / fitted.speed - 1.0), 100.0 * (sharp.lateral_rms / fitted.lateral_rms - 1.0));
+    EXPECT_NEAR(sharp.speed, fitted.speed, 0.01 * fitted.speed);
+    EXPECT_NEAR(sharp.lateral_rms, fitted.lateral_rms, 0.10 * fitted.lateral_rms);
+}
+
 // Runout after a bounce on a slope, water against air (Turmel & Locat 2008, sec. 4.3): "in water the block
 // travels less than 2/3 of the distance it travels in air" before its next impact on the 45 degree slope,
 // "less than half" on the 30 degree slope. examples/bounce_slope with k-epsilon, arrival at about 1.86 m/s;
