@@ -417,7 +417,8 @@ TEST(Turbulence, StudyBlockShedsOnTheSharpCarrierAsBodyFitted) {
         }
         const double mean = impulse / duration;
         const Shedding s{distance / duration, std::sqrt(square / duration - mean * mean)};
-        if (root()) std::printf("mean speed over t = 4-8 s %.4f m/s, lateral force rms %.0f N\n", s.speed, s.lateral_rms);
+        if (root())
+            std::printf("mean speed over t = 4-8 s %.4f m/s, lateral force rms %.0f N\n", s.speed, s.lateral_rms);
         return s;
     };
     const Shedding sharp = shedding({"bodies.block.carrier=immersed", "bodies.block.follow=y",
