@@ -40,7 +40,8 @@ struct BodyConfig {
     double reference_velocity = 1.0, reference_length = 1.0;  // force coefficients
     CarrierKind carrier = CarrierKind::immersed;
     bool layers = false;  // body_fitted: the grid follows with modifier layers (band/layers.hpp), not translating
-    std::array<bool, 2> follow{false, false};  // immersed: the grid follows the body by whole cells along x, y
+    std::array<bool, 2> follow{false,
+                               false};  // immersed: the grid follows the body along x, y (run/following_frame.hpp)
 };
 
 // Where a body is at the start, for the check that it lies in the domain (run/case_file.cpp): the key that

@@ -58,6 +58,7 @@ chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnIncl
 # slip"): with numerics.ibm.projection_passes 8 the means agree (1.0065) but the ripple is 1.79 %.
 chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow")
 chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAtTerminalSpeed 2 "validation;slow;known_failure")
+chute_validation(galilean_pair_study_block_sharp MovingBodies.GalileanPairStudyBlockSharpInAWindow 2 "validation;slow")
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
