@@ -48,6 +48,7 @@ chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "
 # Known failure, kept as the record of the forces issue's item 5 (docs/validation.md, DFG 2D-2): the unsteady lift
 # is 6 % low at D/h 40.
 chute_validation(dfg_2d2 FixedBodies.SchaeferTurek2D2 2 "validation;slow;known_failure")
+chute_validation(dfg_2d2_sharp FixedBodies.SchaeferTurek2D2Sharp 2 "validation;slow")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(added_mass_square_body_fitted MovingBodies.AddedMassOfSquareBodyFitted 2 "validation")
