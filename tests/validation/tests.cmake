@@ -49,6 +49,10 @@ chute_validation(dfg_2d1_convergence FixedBodies.SchaeferTurek2D1Convergence 2 "
 # is 6 % low at D/h 40.
 chute_validation(dfg_2d2 FixedBodies.SchaeferTurek2D2 2 "validation;slow;known_failure")
 chute_validation(dfg_2d2_sharp FixedBodies.SchaeferTurek2D2Sharp 2 "validation;slow")
+# Known failure, kept as the record of the sharp-corners issue (docs/validation.md, "Sharp interface", tenth step): a
+# sharp square held in a stream reads its drag within 1 % of body-fitted when its sides lie on grid lines, but -8.6 %
+# to +4.3 % (and a lateral force) when they lie within cells.
+chute_validation(sharp_square_offsets FixedBodies.SharpSquareDragIndependentOfItsPlaceInTheCell 2 "validation;slow;known_failure")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(added_mass_square_body_fitted MovingBodies.AddedMassOfSquareBodyFitted 2 "validation")
