@@ -45,9 +45,8 @@ double open_fraction(const Body& body, const Vec2& a, const Vec2& b, double tole
 bool CutFaces::update() {
     const bool moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
     // Static bodies once, and again when the grid moved under them (a following window).
-    if (done_ && !moves && placed_lines_ == grid_.lines_version()) return false;
-    done_ = true;
-    placed_lines_ = grid_.lines_version();
+    if (!placement_.stale(moves)) return false;
+    placement_.computed();
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
     const int nx = grid_.nx(), ny = grid_.ny();

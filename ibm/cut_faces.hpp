@@ -19,6 +19,7 @@
 
 #include "body.hpp"
 #include "field.hpp"
+#include "grid_placement.hpp"
 #include "rigid_body.hpp"  // Wrench
 
 namespace chute {
@@ -71,8 +72,7 @@ private:
     // from its lower end (x for a v face, y for a u face).
     Field2D owner_u_, owner_v_, shut_middle_u_, shut_middle_v_;
     Vec2 shut_point(bool is_u, int i, int j, double middle) const;  // a face's point `middle` along it
-    bool done_ = false;
-    long long placed_lines_ = -1;  // Grid::lines_version() at the last update
+    GridPlacement placement_{grid_};
 };
 
 }  // namespace chute

@@ -55,8 +55,7 @@ void DirectForcing::place_markers() {
     su_ = delta_stencils(grid_, config_.kernel, Staggering::u_face, world_);
     sv_ = delta_stencils(grid_, config_.kernel, Staggering::v_face, world_);
     find_interior_faces();
-    placed_ = true;
-    placed_lines_ = grid_.lines_version();
+    placement_.computed();
 }
 
 void DirectForcing::find_interior_faces() {
@@ -139,7 +138,7 @@ void DirectForcing::begin_step() {
 
 void DirectForcing::apply(Velocity& star, double dt) {
     const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
-    if (!placed_ || any_moves || placed_lines_ != grid_.lines_version()) place_markers();
+    if (placement_.stale(any_moves)) place_markers();
     const std::size_t n = world_.size();
     std::vector<Vec2> target(n), force_sum(n, Vec2::Zero());
     for (std::size_t b = 0; b < bodies_.size(); ++b)

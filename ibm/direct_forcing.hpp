@@ -31,6 +31,7 @@
 
 #include "body.hpp"
 #include "euler_lagrange.hpp"
+#include "grid_placement.hpp"
 #include "immersed_forcing.hpp"
 
 namespace chute {
@@ -72,8 +73,7 @@ private:
         double share;  // a(d): the share of the way to the body velocity it is moved, (0, 1]
     };
     std::vector<std::vector<InteriorFace>> interior_;  // per body
-    bool placed_ = false;
-    long long placed_lines_ = -1;  // Grid::lines_version() at the last place_markers()
+    GridPlacement placement_{grid_};                   // of the markers
     std::vector<BodyForcing> result_;
     std::vector<BodyState> followed_;  // the accelerations the volume forcing followed so far in this step
 };

@@ -32,10 +32,9 @@ void ImmersedWall::locate() {
     if (bodies_.empty()) return;
     // Body::moves() is true for prescribed and free motion alike.
     const bool any_moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
-    const bool grid_moved = located_lines_ != grid_.lines_version();  // a following window moved the grid
-    if (located_ && !any_moves && !grid_moved) return;
-    located_ = true;
-    located_lines_ = grid_.lines_version();
+    if (!placement_.stale(any_moves)) return;
+    const bool grid_moved = placement_.lines_moved();  // a following window moved the grid (or the first call)
+    placement_.computed();
 
     const int margin = static_cast<int>(std::ceil(image_cells_)) + 3;
     // Static bodies are scanned once (a plane bounds half the domain: all of it is scanned).

@@ -26,6 +26,7 @@
 #include "carrier.hpp"
 #include "euler_lagrange.hpp"
 #include "field.hpp"
+#include "grid_placement.hpp"
 
 namespace chute {
 
@@ -66,8 +67,7 @@ private:
     std::vector<BandCell> band_, static_band_;
     bool static_scanned_ = false;
     std::vector<Stencil> su_, sv_, sk_;
-    bool located_ = false;
-    long long located_lines_ = -1;  // Grid::lines_version() at the last locate()
+    GridPlacement placement_{grid_};  // of the wall cells
 };
 
 }  // namespace chute

@@ -209,7 +209,7 @@ void SharpForcing::classify() {
         }
     }
     placed_ = true;
-    classified_lines_ = grid_.lines_version();
+    placement_.computed();
 }
 
 std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, int i, int j) const {
@@ -444,7 +444,7 @@ bool SharpForcing::any_moves() const {
     return std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });
 }
 
-bool SharpForcing::classified() const { return placed_ && !any_moves() && classified_lines_ == grid_.lines_version(); }
+bool SharpForcing::classified() const { return !placement_.stale(any_moves()); }
 
 void SharpForcing::begin_step() {
     if (!classified()) classify();

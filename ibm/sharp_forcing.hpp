@@ -58,6 +58,7 @@
 
 #include "body.hpp"
 #include "euler_lagrange.hpp"
+#include "grid_placement.hpp"
 #include "ibm_config.hpp"
 #include "immersed_forcing.hpp"
 
@@ -204,7 +205,7 @@ private:
     std::size_t first_covered_ = 0;
     Field2D uncovered_;  // 0 in covered_ cells, 1 elsewhere (owned cells)
     bool placed_ = false;
-    long long classified_lines_ = -1;  // Grid::lines_version() at the last classify()
+    GridPlacement placement_{grid_};  // of the classification
     std::vector<BodyForcing> result_;
     Velocity open_flux_;   // open_flux(): nonzero only on the faces listed below
     Velocity wall_faces_;  // wall_faces()

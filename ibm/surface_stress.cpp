@@ -47,8 +47,7 @@ void SurfaceStress::place() {
         su_.push_back(bilinear_stencils(grid_, Staggering::u_face, at));
         sv_.push_back(bilinear_stencils(grid_, Staggering::v_face, at));
     }
-    placed_ = true;
-    placed_lines_ = grid_.lines_version();
+    placement_.computed();
 }
 
 std::vector<double> SurfaceStress::along_outline(const std::vector<double>& f) const {
@@ -71,7 +70,7 @@ std::vector<double> SurfaceStress::along_outline(const std::vector<double>& f) c
 
 SurfaceForces SurfaceStress::compute(const Velocity& vel, const Field2D& p, double density, double viscosity,
                                      double depth, const WallTurbulence* turbulence) {
-    if (!placed_ || body_.moves() || placed_lines_ != grid_.lines_version()) place();
+    if (placement_.stale(body_.moves())) place();
     const std::size_t n = markers_.size(), np = d_.size(), outer = np - 1;
     std::vector<std::vector<double>> P(np), W(np);
     for (std::size_t k = 0; k < np; ++k) {

@@ -32,6 +32,7 @@
 #include "body_forces.hpp"
 #include "carrier.hpp"
 #include "euler_lagrange.hpp"
+#include "grid_placement.hpp"
 
 namespace chute {
 
@@ -58,8 +59,7 @@ private:
     std::vector<std::vector<Vec2>> probes_;  // [probe][point]
     std::vector<double> h_, wall_pressure_;
     std::vector<std::vector<Stencil>> sp_, su_, sv_;  // [probe][point]
-    bool placed_ = false;
-    long long placed_lines_ = -1;  // Grid::lines_version() at the last place()
+    GridPlacement placement_{grid_};                  // of the probes
 };
 
 // Weights w_k of the least-squares fit f(d) = sum_m c_m d^(powers_m) through (d_k, f_k): the first coefficient

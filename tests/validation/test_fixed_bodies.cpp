@@ -203,7 +203,7 @@ TEST(FixedBodies, SchaeferTurek2D2Sharp) {
 // cells -8.6 %, (0.5, 0.5) -2.0 %, (0.75, 0.25) +0.4 %, (0, 0.5) +4.3 % with a lateral force of 2 %: known failure,
 // kept as the record of the sharp-corners issue (docs/validation.md, "Sharp interface", tenth step). With k-epsilon
 // the same offsets spread from -7 % to +1 %, and a block held in a stream face-on reads +1.1 / -1.8 / -10 % a quarter
-// / a half / three quarters of a cell off (fifth step). Slow: about 2 minutes on 2 ranks.
+// / a half / three quarters of a cell off (fifth step). 16 s on 2 ranks.
 TEST(FixedBodies, SharpSquareDragIndependentOfItsPlaceInTheCell) {
     auto forces = [](double ox, double oy, const std::string& carrier) {
         const double h = 0.015;
