@@ -174,11 +174,15 @@ TEST(FixedBodies, SchaeferTurek2D2) {
     EXPECT_LT(std::abs(fine.cl_max - 1.0), std::abs(coarse.cl_max - 1.0));
 }
 
-// The same on the sharp interface with its laminar default (forcing faces, quadratic profile; the sharp-corners
-// issue): at D/h = 40 C_D max, C_L max and St inside the bands, at D/h = 20 within 2 % of them (of the band's
-// nearer edge). Slow: about 15 minutes on 2 ranks.
+// The same on the sharp interface with ghost faces (the carrier that k-epsilon needs, cut pressure problem; the
+// sharp-corners issue): at D/h = 40 C_D max, C_L max and St inside the bands, at D/h = 20 within 2 % of them (of the
+// band's nearer edge). Known failure, kept as the record (docs/validation.md, "Sharp interface", eighth and tenth
+// steps): D/h 40 C_L max 0.9812 (amplitude 0.999), D/h 20 C_D max 3.3134 (+2.3 %). Forcing faces, the laminar
+// default, read 0.9166 and 3.0732 (2026-11-28). About 10 minutes on 2 ranks.
 TEST(FixedBodies, SchaeferTurek2D2Sharp) {
-    const Shedding coarse = dfg_2d2(20, kSharp), fine = dfg_2d2(40, kSharp);
+    std::vector<std::string> ghost = kSharp;
+    ghost.push_back("numerics.ibm.sharp_faces=ghost");
+    const Shedding coarse = dfg_2d2(20, ghost), fine = dfg_2d2(40, ghost);
     EXPECT_GE(fine.strouhal, 0.295);
     EXPECT_LE(fine.strouhal, 0.305);
     EXPECT_GE(fine.cd_max, 3.22);
