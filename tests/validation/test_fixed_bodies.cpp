@@ -178,7 +178,7 @@ TEST(FixedBodies, SchaeferTurek2D2) {
 // sharp-corners issue): at D/h = 40 C_D max, C_L max and St inside the bands, at D/h = 20 within 2 % of them (of the
 // band's nearer edge). Known failure, kept as the record (docs/validation.md, "Sharp interface", eighth and tenth
 // steps): D/h 40 C_L max 0.9812 (amplitude 0.999), D/h 20 C_D max 3.3134 (+2.3 %). Forcing faces, the laminar
-// default, read 0.9166 and 3.0732 (2026-11-28). About 10 minutes on 2 ranks.
+// default, read 0.9166 and 3.0732 (2026-11-28). About 5 minutes on 2 ranks.
 TEST(FixedBodies, SchaeferTurek2D2Sharp) {
     std::vector<std::string> ghost = kSharp;
     ghost.push_back("numerics.ibm.sharp_faces=ghost");
