@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 #include <numeric>
+#include <utility>
 
 #include "body_run.hpp"
 #include "case_file.hpp"
@@ -307,20 +308,31 @@ bodies:
 // leaks through the slip the projection leaves and its drag follows that slip; with 8 forcing and projection passes
 // per step (numerics.ibm.projection_passes) the means agree (1.0065) and the ripple fails (1.79 %)
 // (docs/validation.md, "The fixed block's drag follows its slip").
-TEST(MovingBodies, GalileanPairStudyBlockAtTerminalSpeed) {
-    const double U = 2.32;
-    CaseConfig moving = load_case(kExamples + "free_fall_block/case.yaml", {"time.end=2.0", "numerics.dt=0.0015"});
-    BodyConfig& block = moving.bodies.at(0);
+namespace {
+
+// The study block of `c` made to fall at U through still water, and the same block held (motion fixed) in the stream
+// U entering through the bottom; the caller sets what else the held case changes.
+std::pair<CaseConfig, CaseConfig> moving_and_held(CaseConfig c, double U) {
+    BodyConfig& block = c.bodies.at(0);
     block.motion = MotionConfig{};
     block.motion.type = MotionType::constant_velocity;
     block.motion.velocity = {0.0, -U};
     block.density = 0.0;
-    CaseConfig fixed = moving;
+    CaseConfig fixed = c;
     fixed.bodies.at(0).motion = MotionConfig{};
-    fixed.y.start = -4.5;
-    fixed.y.end = 7.0;
     fixed.initial_velocity = {0.0, U};
     fixed.boundary[static_cast<int>(Side::bottom)] = {.type = BoundaryType::inflow, .velocity = {0.0, U}};
+    return {c, fixed};
+}
+
+}  // namespace
+
+TEST(MovingBodies, GalileanPairStudyBlockAtTerminalSpeed) {
+    const double U = 2.32;
+    auto [moving, fixed] =
+        moving_and_held(load_case(kExamples + "free_fall_block/case.yaml", {"time.end=2.0", "numerics.dt=0.0015"}), U);
+    fixed.y.start = -4.5;
+    fixed.y.end = 7.0;
     fixed.boundary[static_cast<int>(Side::top)] = {.type = BoundaryType::outflow};
     const GalileanPair r = galilean_pair(moving, fixed, Vec2(0.0, 1.0), U, 1.0, 2.0);
     EXPECT_NEAR(r.moving_mean / r.fixed_mean, 1.0, 0.01);
@@ -340,17 +352,8 @@ TEST(MovingBodies, GalileanPairStudyBlockSharpInAWindow) {
     const double U = 2.32;
     const std::vector<std::string> sharp = {"time.end=2.0", "numerics.dt=0.0015", "numerics.ibm.interface=sharp",
                                             "numerics.ibm.sharp_faces=ghost"};
-    CaseConfig moving = load_case(kExamples + "free_fall_block/window.yaml", sharp);
-    BodyConfig& block = moving.bodies.at(0);
-    block.motion = MotionConfig{};
-    block.motion.type = MotionType::constant_velocity;
-    block.motion.velocity = {0.0, -U};
-    block.density = 0.0;
-    CaseConfig fixed = moving;
-    fixed.bodies.at(0).motion = MotionConfig{};
+    auto [moving, fixed] = moving_and_held(load_case(kExamples + "free_fall_block/window.yaml", sharp), U);
     fixed.bodies.at(0).follow = {false, false};
-    fixed.initial_velocity = {0.0, U};
-    fixed.boundary[static_cast<int>(Side::bottom)] = {.type = BoundaryType::inflow, .velocity = {0.0, U}};
     const GalileanPair r = galilean_pair(moving, fixed, Vec2(0.0, 1.0), U, 1.0, 2.0);
     EXPECT_NEAR(r.moving_mean / r.fixed_mean, 1.0, 0.01);
     EXPECT_LT(r.ripple, 0.01);
