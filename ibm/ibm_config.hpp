@@ -32,7 +32,9 @@ struct IbmConfig {
     double marker_spacing = 1.0;                       // in grid cells
     double retraction = 0.43;                          // markers moved inwards by this many cells (DFG 2D-1 drag)
     int volume_ramp = 2;                               // cells over which the volume forcing fades in (0: a switch)
-    std::vector<double> stress_probes{2.5, 3.5, 4.5};  // probe distances along the normal, in cells
+    // Probe distances along the normal, in cells (the sharp interface's default, when the key is not given, is
+    // 1.5, 2.5, 3.5: read_ibm).
+    std::vector<double> stress_probes{2.5, 3.5, 4.5};
     double virtual_mass = 1.0;                         // C_V of the free-body update (Schwarz et al. 2015)
 };
 

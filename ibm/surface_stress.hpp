@@ -8,7 +8,8 @@
 // less the retraction: 2 - 0.43 = 1.57 cells out with the default roma3_smoothed, 1.2 with roma3 and 0.3), and a
 // bilinear probe reads grid points up to one cell nearer the surface than itself; so they are sampled beyond
 // the reach plus a cell (the first default probe, 2.5 cells, reads points from 1.5 cells: at the smear's edge), at
-// probes X_l + d_k h n_l (numerics.ibm.stress_probes, default d = 2.5, 3.5, 4.5 cells; h the local spacing), bilinear
+// probes X_l + d_k h n_l (numerics.ibm.stress_probes, default d = 2.5, 3.5, 4.5 cells, and 1.5, 2.5, 3.5 on the sharp
+// interface, whose field has no smear to clear; h the local spacing), bilinear
 // interpolation across MPI patches, and fitted by least squares in y = d h (fit_weights):
 //   pressure   p(y) = p_l + (dp/dn) y + c y^2, with the wall-normal gradient the momentum equation sets at a
 //              no-slip wall (Gresho & Sani 1987, IJNMF 7:1111, eq. 8):

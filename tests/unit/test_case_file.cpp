@@ -590,6 +590,18 @@ TEST(CaseFile, BodyErrorsNameTheKey) {
                    {"numerics.ibm.stress_probes", "second distance must be greater"});
 }
 
+// The surface-stress probes: 2.5, 3.5, 4.5 cells out by default (clear of the diffuse interface's smear), 1.5, 2.5, 3.5
+// on the sharp interface (nothing to clear), and what the case gives either way.
+TEST(CaseFile, StressProbesFollowTheInterfaceUnlessGiven) {
+    const std::string circle = "bodies:\n  cyl: {shape: circle, centre: [0.5, 0.5], diameter: 0.25}\n";
+    EXPECT_EQ(parse_case_text(kMinimal + circle).ibm.stress_probes, (std::vector<double>{2.5, 3.5, 4.5}));
+    EXPECT_EQ(parse_case_text(kMinimal + circle, {"numerics.ibm.interface=sharp"}).ibm.stress_probes,
+              (std::vector<double>{1.5, 2.5, 3.5}));
+    EXPECT_EQ(parse_case_text(kMinimal + circle, {"numerics.ibm.interface=sharp", "numerics.ibm.stress_probes=[2, 3]"})
+                  .ibm.stress_probes,
+              (std::vector<double>{2.0, 3.0}));
+}
+
 TEST(CaseFile, FreeBodyKeysAndErrors) {
     const std::string block = "bodies:\n  block:\n    shape: rectangle\n    centre: [0.5, 0.5]\n    size: [0.2, 0.2]\n";
     const CaseConfig c = parse_case_text(kMinimal + block +
