@@ -35,7 +35,7 @@ struct IbmConfig {
     // Probe distances along the normal, in cells (the sharp interface's default, when the key is not given, is
     // 1.5, 2.5, 3.5: read_ibm).
     std::vector<double> stress_probes{2.5, 3.5, 4.5};
-    double virtual_mass = 1.0;                         // C_V of the free-body update (Schwarz et al. 2015)
+    double virtual_mass = 1.0;  // C_V of the free-body update (Schwarz et al. 2015)
 };
 
 // The schema's numerics.ibm section (io/case_reader.hpp) and its reading (2 to 6 probes, each beyond the one before).

@@ -105,15 +105,16 @@ std::vector<CaseKey> ibm_keys() {
          .type = K::number_list,
          .default_value = "[2.5, 3.5, 4.5]",
          .min = above(0),
-         .meaning = "Distances from the surface, in cells along the normal, of the probes (2 to 6, increasing) that "
-                    "sample pressure and velocity for the surface-stress force. Fitted by least squares and "
-                    "evaluated at the surface: the pressure as p_wall + (dp/dn) y + c y^2 with dp/dn from the "
-                    "momentum equation at the wall, the tangential velocity as a y + b y^2 (no slip). Beyond "
-                    "2.2 cells the probes' bilinear stencils clear the diffuse interface's reach (docs/validation.md). "
-                    "With numerics.ibm.interface: sharp and the key not given, [1.5, 2.5, 3.5]: the sharp field has no "
-                    "smear to clear (DFG 2D-1 at D/h 40: (b) 5.5688 against 5.5441; the 1 m block 0.1 s after its impact "
-                    "on the bed, whose probes at 4.5 cells reached through the 2-cell gap into the bed: pressure + "
-                    "viscous + turbulent 12 % under the total against 36 %)."},
+         .meaning =
+             "Distances from the surface, in cells along the normal, of the probes (2 to 6, increasing) that "
+             "sample pressure and velocity for the surface-stress force. Fitted by least squares and "
+             "evaluated at the surface: the pressure as p_wall + (dp/dn) y + c y^2 with dp/dn from the "
+             "momentum equation at the wall, the tangential velocity as a y + b y^2 (no slip). Beyond "
+             "2.2 cells the probes' bilinear stencils clear the diffuse interface's reach (docs/validation.md). "
+             "With numerics.ibm.interface: sharp and the key not given, [1.5, 2.5, 3.5]: the sharp field has no "
+             "smear to clear (DFG 2D-1 at D/h 40: (b) 5.5688 against 5.5441; the 1 m block 0.1 s after its impact "
+             "on the bed, whose probes at 4.5 cells reached through the 2-cell gap into the bed: pressure + "
+             "viscous + turbulent 12 % under the total against 36 %)."},
         {.path = "numerics.ibm.virtual_mass",
          .type = K::number,
          .default_value = "1.0",

@@ -50,7 +50,6 @@ public:
     static std::optional<FollowingFrame> of(const CaseConfig& config);
 
     std::size_t body() const { return body_; }
-    bool translates() const { return translate_; }
     // Before a step, whole cells: move the grid until the body is less than a cell from where it started on it;
     // the turbulence model's walls, ghosts and corner eddy viscosity are set again after a move. Translating:
     // nothing (after_step() left the grid with the body).

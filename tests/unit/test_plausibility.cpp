@@ -105,4 +105,13 @@ TEST(Plausibility, SharpInterfaceOutsideItsValidationIsNamed) {
         load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "square_cylinder_re22000" / "case.yaml",
                   {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost"}));
     EXPECT_TRUE(lyn.empty()) << lyn.front();
+    // The same window with the block a third of a cell off the y lines.
+    const auto off = plausibility_warnings(
+        load_case(fs::path(CHUTE_SOURCE_DIR) / "examples" / "free_fall_block" / "window.yaml",
+                  {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost", "bodies.block.follow=xy",
+                   "boundaries.left={type: inflow, velocity: [0.0, 0.0]}", "boundaries.right={type: outflow}",
+                   "bodies.block.centre=[0.0, 0.005]"}));
+    ASSERT_EQ(off.size(), 1u);
+    EXPECT_NE(off.front().find("bodies.block.centre"), std::string::npos) << off.front();
+    EXPECT_NE(off.front().find("0.33 off the y lines"), std::string::npos) << off.front();
 }
