@@ -11,17 +11,12 @@ namespace {
 
 // The index of the grid line at x, or an error naming the side and the nearest lines.
 int line_at(const Axis& axis, double x, const std::string& body, const char* side, const char* key) {
+    const NearestLine n = nearest_line(axis, x);
+    if (n.cells <= 1e-6) return n.index;
     const auto& L = axis.lines();
-    const auto it = std::lower_bound(L.begin(), L.end(), x);
-    const int above =
-        static_cast<int>(std::min<std::ptrdiff_t>(it - L.begin(), static_cast<std::ptrdiff_t>(L.size()) - 1));
-    const int below = std::max(above - 1, 0);
-    const int k = std::abs(L[above] - x) < std::abs(L[below] - x) ? above : below;
-    const double cell = std::min(axis.width(std::min(k, axis.cells() - 1)), axis.width(std::max(k - 1, 0)));
-    if (std::abs(L[k] - x) <= 1e-6 * cell) return k;
     std::ostringstream m;
     m << "bodies." << body << ": its " << side << " side at " << x << " m is not on a grid line (nearest lines "
-      << L[below] << " and " << L[above] << " m); a body_fitted body needs its sides on lines of `" << key << "`";
+      << L[n.below] << " and " << L[n.above] << " m); a body_fitted body needs its sides on lines of `" << key << "`";
     throw std::invalid_argument(m.str());
 }
 

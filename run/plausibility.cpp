@@ -175,15 +175,6 @@ bool moves_along(const MotionConfig& m, int k) {
     return true;
 }
 
-// How far a coordinate lies from the nearest line of an axis, in cells (0 on a line, at most 0.5; 0 outside it).
-double off_the_lines(const Axis& a, double s) {
-    const std::vector<double>& lines = a.lines();
-    const auto above = std::lower_bound(lines.begin(), lines.end(), s);
-    if (above == lines.begin() || above == lines.end()) return 0.0;
-    const double lo = *(above - 1), hi = *above;
-    return std::min(s - lo, hi - s) / (hi - lo);
-}
-
 // The sharp interface beside a turbulence model's wall functions needs ghost faces, and a body that moves across a
 // grid at rest smears its boundary layer as its sides cross the cells (docs/limitations.md, "The sharp interface"):
 // a window that translates with it along every axis it moves along carries it with the grid. A rectangle whose sides
@@ -214,8 +205,10 @@ void check_interface(const CaseConfig& c, const Axis& x, const Axis& y, std::vec
         if (b.shape != BodyShape::rectangle || std::abs(quarter_turns - std::round(quarter_turns)) > 1e-9) continue;
         const bool turned = std::lround(quarter_turns) % 2 != 0;
         const double half_x = 0.5 * (turned ? b.size[1] : b.size[0]), half_y = 0.5 * (turned ? b.size[0] : b.size[1]);
-        const double off_x = std::max(off_the_lines(x, b.centre[0] - half_x), off_the_lines(x, b.centre[0] + half_x));
-        const double off_y = std::max(off_the_lines(y, b.centre[1] - half_y), off_the_lines(y, b.centre[1] + half_y));
+        const double off_x =
+            std::max(nearest_line(x, b.centre[0] - half_x).cells, nearest_line(x, b.centre[0] + half_x).cells);
+        const double off_y =
+            std::max(nearest_line(y, b.centre[1] - half_y).cells, nearest_line(y, b.centre[1] + half_y).cells);
         if (off_x > 1e-6 || off_y > 1e-6) {
             std::ostringstream m;
             m.precision(2);

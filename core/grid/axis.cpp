@@ -153,4 +153,15 @@ double clustered_cell_count(double start, double end, double core_start, double 
     return core_cells + side(core_start - start) + side(end - core_end);
 }
 
+NearestLine nearest_line(const Axis& axis, double x) {
+    const auto& L = axis.lines();
+    const auto it = std::lower_bound(L.begin(), L.end(), x);
+    const int above =
+        static_cast<int>(std::min<std::ptrdiff_t>(it - L.begin(), static_cast<std::ptrdiff_t>(L.size()) - 1));
+    const int below = std::max(above - 1, 0);
+    const int k = std::abs(L[above] - x) < std::abs(L[below] - x) ? above : below;
+    const double cell = std::min(axis.width(std::min(k, axis.cells() - 1)), axis.width(std::max(k - 1, 0)));
+    return {below, above, k, std::abs(L[k] - x) / cell};
+}
+
 }  // namespace chute

@@ -34,6 +34,15 @@ private:
     bool periodic_ = false;
 };
 
+// Where a coordinate x lies among an axis's lines: the lines bracketing it (`below`, `above`, clamped to the axis),
+// the nearer of the two, and x's distance from that one in cells (of the narrower cell beside it). A body's side
+// "on a grid line" is one within 1e-6 of a cell (band/hole.cpp; run/plausibility.cpp).
+struct NearestLine {
+    int below, above, index;
+    double cells;
+};
+NearestLine nearest_line(const Axis& axis, double x);
+
 // All cells of the axis equally wide (to 1e-10 relative): a transform can run along it (core/solvers/direct_poisson),
 // a window can move along it by whole cells (run/following_frame).
 bool uniform_axis(const Axis& axis);
