@@ -55,6 +55,10 @@ chute_validation(dfg_2d2_sharp FixedBodies.SchaeferTurek2D2Sharp 2 "validation;s
 # sharp square held in a stream reads its drag within 1 % of body-fitted when its sides lie on grid lines, but -8.6 %
 # to +4.3 % (and a lateral force) when they lie within cells.
 chute_validation(sharp_square_offsets FixedBodies.SharpSquareDragIndependentOfItsPlaceInTheCell 2 "validation;slow;known_failure")
+# Known failure, kept as the record of the sharp-corners issue (docs/validation.md, "Sharp interface", eleventh step):
+# the force of a sharp body jumps as its surface crosses the place where the faces' classification switches (ghost
+# faces: -10 % / +15 % either side of a tangential face's centre; forcing faces: -5 % / +11 % either side of a line).
+chute_validation(sharp_force_continuity FixedBodies.SharpForceContinuousAsTheSurfaceCrossesFaces 2 "validation;slow;known_failure")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(added_mass_square_body_fitted MovingBodies.AddedMassOfSquareBodyFitted 2 "validation")
