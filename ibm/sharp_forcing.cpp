@@ -228,12 +228,15 @@ std::size_t SharpForcing::face_keys() const {
     return static_cast<std::size_t>(grid_.ny() + 2) * (grid_.nx() + 2 * kGhost);
 }
 
-double SharpForcing::on_surface(std::size_t b) const { return ghost_ ? on_surface_tolerance(cell_size_[b]) : 0.0; }
+double SharpForcing::on_surface(std::size_t b) const {
+    const double tolerance = on_surface_tolerance(cell_size_[b]);
+    return ghost_ ? tolerance : -tolerance;
+}
 
 bool SharpForcing::inside_any(const Vec2& X) const {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
-        if (ghost_ ? body.outline().signed_distance(body.to_body(X)) < on_surface(b) : body.contains(X)) return true;
+        if (body.outline().signed_distance(body.to_body(X)) < on_surface(b)) return true;
     }
     return false;
 }

@@ -38,7 +38,10 @@
 // equation: the flow beside the wall may then reverse under a separated layer, which a profile from the wall to an
 // image point cannot give the forcing faces (docs/validation.md, "Sharp interface"). A face on the surface (|phi|
 // below 1e-9 of a cell: a wall on a grid line) counts as inside, so that it takes the body's velocity as a
-// body-fitted wall's face does.
+// body-fitted wall's face does. With forcing faces it counts as outside (a forcing face, set to the wall's velocity,
+// the next face free, as beside a body-fitted wall): either way the same on every side of a body, whatever the
+// round-off of its distance (decided by that round-off before, a square held in a stream along its diagonal, its
+// sides on grid lines, read a lateral force of 5 % of its drag on a grid symmetric about the diagonal).
 // A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
 // The pressure: with forcing faces it is solved on the whole grid (the fast solvers stay); the projection then moves
 // the forced faces by dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U
@@ -167,7 +170,7 @@ private:
     bool classified() const;
     void classify();
     void find_covered_cells();
-    double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b
+    double on_surface(std::size_t b) const;  // phi below which a face counts as inside body b (+-1e-9 of a cell)
     long long face_key(int i, int j) const;  // a face's key among one component's faces (local indices)
     std::size_t face_keys() const;           // the number of keys of faces i in [0, nx], j in [0, ny]
     // The signed distances to body b of a face's two ends (below on_surface(): negative, as CutFaces counts them).

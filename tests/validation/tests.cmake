@@ -55,6 +55,7 @@ chute_validation(dfg_2d2_sharp FixedBodies.SchaeferTurek2D2Sharp 2 "validation;s
 # sharp square held in a stream reads its drag within 1 % of body-fitted when its sides lie on grid lines, but -8.6 %
 # to +4.3 % (and a lateral force) when they lie within cells.
 chute_validation(sharp_square_offsets FixedBodies.SharpSquareDragIndependentOfItsPlaceInTheCell 2 "validation;slow;known_failure")
+chute_validation(sharp_square_symmetric FixedBodies.SharpSquareOnALineFeelsNoForceAcrossASymmetricStream 2 "validation")
 # Known failure, kept as the record of the sharp-corners issue (docs/validation.md, "Sharp interface", eleventh step):
 # the force of a sharp body jumps as its surface crosses the place where the faces' classification switches (ghost
 # faces: -10 % / +15 % either side of a tangential face's centre; forcing faces: -5 % / +11 % either side of a line).
