@@ -194,6 +194,28 @@ TEST(FixedBodies, SchaeferTurek2D2Sharp) {
     expect_in_dfg_2d2_bands(coarse, 0.02);
 }
 
+namespace {
+
+// The square of side 0.3 held in a laminar stream along its diagonal, (-0.92, 0.92) m/s (Re = |U| d / nu = 300), from
+// an impulsive start: inflow on the right and bottom, outflow on the left and top. `domain`: its x and y keys;
+// `block`: the body's keys beyond shape and size; `faces`: numerics.ibm.sharp_faces.
+std::string square_in_diagonal_stream(const std::string& domain, const std::string& block, const std::string& faces,
+                                      double end) {
+    return "domain:\n" + domain + R"(fluid: {density: 1000.0, viscosity: 1.3e-3}
+initial: {velocity: [-0.92, 0.92]}
+boundaries:
+  left: {type: outflow, kind: convective}
+  right: {type: inflow, velocity: [-0.92, 0.92]}
+  bottom: {type: inflow, velocity: [-0.92, 0.92]}
+  top: {type: outflow, kind: convective}
+bodies:
+  block: {shape: rectangle, size: [0.3, 0.3])" +
+           block + "}\nnumerics: {convection: van_leer, cfl: 0.4, ibm: {interface: sharp, sharp_faces: " + faces +
+           "}}\ntime: {end: " + std::to_string(end) + "}\n";
+}
+
+}  // namespace
+
 // A sharp square's drag should not depend on where it lies within its cells. The square of side 0.3 (20 cells
 // across, h = 0.015) held in a laminar stream along its diagonal, (-0.92, 0.92) m/s, Re = |U| d / nu = 300, on a
 // 267 x 233 uniform grid (inflow on the right and bottom, outflow on the left and top), from an impulsive start;
@@ -208,23 +230,10 @@ TEST(FixedBodies, SchaeferTurek2D2Sharp) {
 TEST(FixedBodies, SharpSquareDragIndependentOfItsPlaceInTheCell) {
     auto forces = [](double ox, double oy, const std::string& carrier) {
         const double h = 0.015;
-        const std::string text = R"(
-domain:
-  x: {start: -2.01, end: 1.995, cells: 267}
-  y: {start: -1.0, end: 2.495, cells: 233}
-fluid: {density: 1000.0, viscosity: 1.3e-3}
-initial: {velocity: [-0.92, 0.92]}
-boundaries:
-  left: {type: outflow, kind: convective}
-  right: {type: inflow, velocity: [-0.92, 0.92]}
-  bottom: {type: inflow, velocity: [-0.92, 0.92]}
-  top: {type: outflow, kind: convective}
-bodies:
-  block: {shape: rectangle, size: [0.3, 0.3], carrier: )" +
-                                 carrier + R"(}
-numerics: {convection: van_leer, cfl: 0.4, ibm: {interface: sharp, sharp_faces: ghost}}
-time: {end: 0.45}
-)";
+        const std::string text = square_in_diagonal_stream(
+            "  x: {start: -2.01, end: 1.995, cells: 267}\n"
+            "  y: {start: -1.0, end: 2.495, cells: 233}\n",
+            ", carrier: " + carrier, "ghost", 0.45);
         const CaseConfig c = parse_case_text(
             text, {"bodies.block.centre=[" + std::to_string(ox * h) + ", " + std::to_string(0.8 + oy * h) + "]"});
         BodyRun run(c, MPI_COMM_WORLD);
@@ -256,23 +265,10 @@ time: {end: 0.45}
 // square's bed; ibm/sharp_forcing.hpp.) 0.05 s, about a second.
 TEST(FixedBodies, SharpSquareOnALineFeelsNoForceAcrossASymmetricStream) {
     for (const std::string faces : {"forcing", "ghost"}) {
-        const std::string text = R"(
-domain:
-  x: {start: -1.05, end: 1.05, cells: 140}
-  y: {start: -0.25, end: 1.85, cells: 140}
-fluid: {density: 1000.0, viscosity: 1.3e-3}
-initial: {velocity: [-0.92, 0.92]}
-boundaries:
-  left: {type: outflow, kind: convective}
-  right: {type: inflow, velocity: [-0.92, 0.92]}
-  bottom: {type: inflow, velocity: [-0.92, 0.92]}
-  top: {type: outflow, kind: convective}
-bodies:
-  block: {shape: rectangle, centre: [0.0, 0.8], size: [0.3, 0.3]}
-numerics: {convection: van_leer, cfl: 0.4, ibm: {interface: sharp, sharp_faces: )" +
-                                 faces + R"(}}
-time: {end: 0.05}
-)";
+        const std::string text = square_in_diagonal_stream(
+            "  x: {start: -1.05, end: 1.05, cells: 140}\n"
+            "  y: {start: -0.25, end: 1.85, cells: 140}\n",
+            ", centre: [0.0, 0.8]", faces, 0.05);
         BodyRun run(parse_case_text(text), MPI_COMM_WORLD);
         run.run_to(0.05);
         const Vec2 along = Vec2(-1.0, 1.0) / std::sqrt(2.0), across = Vec2(1.0, 1.0) / std::sqrt(2.0);
