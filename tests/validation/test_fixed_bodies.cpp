@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "body_run.hpp"
@@ -214,6 +215,14 @@ bodies:
            "}}\ntime: {end: " + std::to_string(end) + "}\n";
 }
 
+// Its drag along the stream, (-1, 1) / sqrt 2, and its force across it, (1, 1) / sqrt 2: means of the forcing (a) over
+// t0-t1.
+std::pair<double, double> diagonal_stream_forces(const BodyRun& run, double t0, double t1) {
+    const Vec2 along = Vec2(-1.0, 1.0) / std::sqrt(2.0), across = Vec2(1.0, 1.0) / std::sqrt(2.0);
+    return {run.mean(t0, t1, [&](const BodyForces& f) { return f.forcing.dot(along); }),
+            run.mean(t0, t1, [&](const BodyForces& f) { return f.forcing.dot(across); })};
+}
+
 }  // namespace
 
 // A sharp square's drag should not depend on where it lies within its cells. The square of side 0.3 (20 cells
@@ -238,9 +247,7 @@ TEST(FixedBodies, SharpSquareDragIndependentOfItsPlaceInTheCell) {
             text, {"bodies.block.centre=[" + std::to_string(ox * h) + ", " + std::to_string(0.8 + oy * h) + "]"});
         BodyRun run(c, MPI_COMM_WORLD);
         run.run_to(0.45);
-        const Vec2 along = Vec2(-1.0, 1.0) / std::sqrt(2.0), across = Vec2(1.0, 1.0) / std::sqrt(2.0);
-        const double drag = run.mean(0.35, 0.45, [&](const BodyForces& f) { return f.forcing.dot(along); });
-        const double lateral = run.mean(0.35, 0.45, [&](const BodyForces& f) { return f.forcing.dot(across); });
+        const auto [drag, lateral] = diagonal_stream_forces(run, 0.35, 0.45);
         if (root())
             std::printf("square %s, offset (%.2f, %.2f) cells: drag %.1f N/m, lateral %.1f N/m\n", carrier.c_str(), ox,
                         oy, drag, lateral);
@@ -271,9 +278,7 @@ TEST(FixedBodies, SharpSquareOnALineFeelsNoForceAcrossASymmetricStream) {
             ", centre: [0.0, 0.8]", faces, 0.05);
         BodyRun run(parse_case_text(text), MPI_COMM_WORLD);
         run.run_to(0.05);
-        const Vec2 along = Vec2(-1.0, 1.0) / std::sqrt(2.0), across = Vec2(1.0, 1.0) / std::sqrt(2.0);
-        const double drag = run.mean(0.0, 0.05, [&](const BodyForces& f) { return f.forcing.dot(along); });
-        const double lateral = run.mean(0.0, 0.05, [&](const BodyForces& f) { return f.forcing.dot(across); });
+        const auto [drag, lateral] = diagonal_stream_forces(run, 0.0, 0.05);
         if (root())
             std::printf("square on the lines, %s faces: drag %.4f N/m, across %.3e N/m\n", faces.c_str(), drag,
                         lateral);
