@@ -8,8 +8,10 @@
 // surface counts as inside, so that a face lying on a surface on a grid line is shut. (The surface taken straight
 // between the ends, phi_out / (phi_out - phi_in), left the face along a square's side open whole while the corner
 // crossed it: alpha 1 where the open part is the corner's distance, a step each time a moving corner crossed a face
-// line.) Two ends outside: open (a surface bulging through a face between its ends is not seen). The cells
-// with an open face hold flow (the pressure problem's cells); the flux through a face is
+// line.) A face cut within 1e-8 of its length from an end is whole, open or shut: that close, the crossing is the
+// tolerance's, in bits the round-off of the body's place decides. Two ends outside: open (a surface bulging through a
+// face between its ends is not seen). The cells with an open face hold flow (the pressure problem's cells); the flux
+// through a face is
 //   A (alpha u + (1 - alpha) U_b),  U_b the body's velocity at the shut part's middle,
 // the fluid's part through the open fraction and the body's through the rest, so that a cut cell's mass balance
 // carries the body's motion across its shut part (the geometric conservation of a moving surface: Seo & Mittal

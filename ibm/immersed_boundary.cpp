@@ -1,5 +1,8 @@
 #include "immersed_boundary.hpp"
 
+#include <mpi.h>
+
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -9,6 +12,11 @@
 namespace chute {
 
 namespace {
+
+// Two arrays the same bit for bit.
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
 
 // The sharp interface's profile (numerics.ibm.sharp_profile). Automatic: quadratic in laminar runs; with a
 // wall-function model the law of the wall on forcing faces, and on ghost faces the mirror (the law of the wall has no
@@ -54,7 +62,8 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       start_velocity_(grid),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()),
-      coupling_(bodies.size()) {
+      coupling_(bodies.size()),
+      kept_response_(bodies.size()) {
     if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
@@ -104,8 +113,15 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     // Ghost faces: the pressure problem follows the surfaces where they are now, through the open fraction of each
     // face (ibm/cut_faces.hpp). With a moving body its matrix and multigrid hierarchy are rebuilt every step: PCG then
     // takes 6 iterations where a hierarchy kept from an earlier step took 14-26 (the moving square: 9.3 s against
-    // 10.6 s for 100 steps), and a restart repeats the straight run bit for bit.
-    if (cut_ && flow_ && (cut_->update() || !pressure_boundary_set_)) set_pressure_boundary();
+    // 10.6 s for 100 steps), and a restart repeats the straight run bit for bit. Not when what the matrix is made of
+    // is the same bit for bit (a body keeping its place on a grid that translates with it): the same matrix.
+    if (cut_ && flow_ && (cut_->update() || !pressure_boundary_set_)) {
+        std::vector<double> inputs = pressure_inputs();
+        if (!pressure_boundary_set_ || !same_everywhere(inputs, pressure_inputs_)) {
+            set_pressure_boundary();
+            pressure_inputs_ = std::move(inputs);
+        }
+    }
     // A further pass of the step forces the projected velocity again: the fluid receives the momentum of
     // every pass, and the slip left is the last pass's.
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -118,6 +134,7 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
 }
 
 void ImmersedBoundary::set_pressure_boundary() {
+    ++pressure_matrix_;
     flow_->set_pressure_boundary(
         {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity(), &sharp_->open_flux()});
     pressure_boundary_set_ = true;
@@ -186,10 +203,9 @@ Wrench ImmersedBoundary::hydrodynamic_wrench(std::size_t b, const Velocity& vel,
                 c.unit.push_back(
                     cut_->shut_velocity(b, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0}, k == 2 ? 1.0 : 0.0, s.centre));
             }
-            // From zero, not from the last step's response: a restart then repeats the straight run bit for bit.
-            c.response = flow_->cut_response(c.unit);
+            c.response = &response(b, c.unit);
             for (std::size_t l = 0; l < c.motions.size(); ++l) {
-                const Wrench push = cut_->pressure_wrenches(c.response.pressure[l], rho, depth)[b];
+                const Wrench push = cut_->pressure_wrenches(c.response->pressure[l], rho, depth)[b];
                 c.added_mass.col(c.motions[l]) = -Eigen::Vector3d(push.force.x(), push.force.y(), push.torque);
             }
             c.imposed = Eigen::Vector3d(s.velocity.x(), s.velocity.y(), s.angular_velocity);
@@ -197,6 +213,40 @@ Wrench ImmersedBoundary::hydrodynamic_wrench(std::size_t b, const Velocity& vel,
         }
     }
     return wrench_[b];
+}
+
+std::vector<double> ImmersedBoundary::pressure_inputs() const {
+    std::vector<double> in;
+    for (const Field2D* f : {&cut_->aperture_u(), &cut_->aperture_v(), &cut_->open_cells()})
+        in.insert(in.end(), f->raw().begin(), f->raw().end());
+    for (const Axis* a : {&grid_.x_axis(), &grid_.y_axis()})
+        for (int k = 0; k < a->cells(); ++k) in.push_back(a->width(k));
+    return in;
+}
+
+bool ImmersedBoundary::same_everywhere(const std::vector<double>& a, const std::vector<double>& b) const {
+    int same = same_bits(a, b);
+    MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_LAND, grid_.comm());
+    return same != 0;
+}
+
+const FlowSolver::BodyResponse& ImmersedBoundary::response(std::size_t b, const std::vector<Velocity>& unit) {
+    // A response is solved from zero, not from the last step's: a restart then repeats the straight run bit for bit.
+    // A body that keeps its place on a grid translating with it (run/following_frame.hpp: the lines move exactly,
+    // without round-off) and does not turn has the same cut faces, matrix and right-hand sides every step, and the
+    // solve, a function of those alone, the same answer: it is kept (the study's free fall on its window, a third of
+    // the step; docs/performance.md). Kept only when the matrix is the one it was solved with and the unit motions'
+    // shut-face velocities are the same bit for bit, so that the kept response is the one a restart solves afresh.
+    std::optional<KeptResponse>& kept = kept_response_[b];
+    int same = kept && kept->matrix == pressure_matrix_ && kept->unit.size() == unit.size();
+    for (std::size_t k = 0; same && k < unit.size(); ++k)
+        same = same_bits(kept->unit[k].u.raw(), unit[k].u.raw()) && same_bits(kept->unit[k].v.raw(), unit[k].v.raw());
+    MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_LAND, grid_.comm());
+    if (!same) {
+        kept = KeptResponse{pressure_matrix_, unit, flow_->cut_response(unit)};
+        ++responses_solved_;
+    }
+    return kept->response;
 }
 
 std::optional<Eigen::Matrix3d> ImmersedBoundary::added_mass(std::size_t b) const {
@@ -214,7 +264,7 @@ void ImmersedBoundary::body_moved(std::size_t b, double dt) {
         along.push_back(change[c.motions[l]]);
         cut_->add_shut_velocity(c.unit[l], along.back());
     }
-    flow_->add_body_response(c.response, along, dt);
+    flow_->add_body_response(*c.response, along, dt);
     // The wrench of the flow as it now is (measure (a)): its pressure changed by the response, -M d(motion) / dt.
     const Eigen::Vector3d push = -c.added_mass * change / dt;
     wrench_[b].force += Vec2(push[0], push[1]);

@@ -83,6 +83,9 @@ public:
     void attach(FlowSolver& flow) override;
 
     const ImmersedForcing& forcing() const { return *forcing_; }
+    // Ghost faces: the responses of the exact coupling solved so far (the others kept from an earlier step), for tests
+    // and diagnostics.
+    std::size_t responses_solved() const { return responses_solved_; }
     const SurfaceStress& surface_stress(std::size_t b) const { return *stress_[b]; }
 
 private:
@@ -110,11 +113,28 @@ private:
     struct Coupling {
         std::vector<int> motions;
         std::vector<Velocity> unit;
-        FlowSolver::BodyResponse response;
+        const FlowSolver::BodyResponse* response = nullptr;  // kept_response_'s, valid until the next step's
         Eigen::Matrix3d added_mass = Eigen::Matrix3d::Zero();
         Eigen::Vector3d imposed = Eigen::Vector3d::Zero();
     };
     std::vector<std::optional<Coupling>> coupling_;
+    // The flow's response to body b's unit motions: solved, or the last one solved for it when everything it is
+    // computed from is the same bit for bit. Collective.
+    const FlowSolver::BodyResponse& response(std::size_t b, const std::vector<Velocity>& unit);
+    // What the cut pressure problem's matrix is made of: the cut faces' apertures, the cells with flow and the grid's
+    // spacings, this rank's part.
+    std::vector<double> pressure_inputs() const;
+    // a and b the same bit for bit on every rank. Collective.
+    bool same_everywhere(const std::vector<double>& a, const std::vector<double>& b) const;
+    std::vector<double> pressure_inputs_;  // of the matrix set last
+    std::size_t pressure_matrix_ = 0;      // counts the matrices set (set_pressure_boundary)
+    struct KeptResponse {
+        std::size_t matrix;          // the pressure_matrix_ it was solved with
+        std::vector<Velocity> unit;  // the unit motions' shut-face velocities it answers
+        FlowSolver::BodyResponse response;
+    };
+    std::vector<std::optional<KeptResponse>> kept_response_;
+    std::size_t responses_solved_ = 0;
 };
 
 }  // namespace chute

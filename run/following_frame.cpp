@@ -1,6 +1,8 @@
 #include "following_frame.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -17,8 +19,15 @@ std::optional<FollowingFrame> FollowingFrame::of(const CaseConfig& config) {
             throw std::invalid_argument("bodies." + bodies[b].name + ".follow: the grid already follows bodies." +
                                         bodies[frame->body()].name + ": one body at most");
         const bool translate = config.ibm.interface == Interface::sharp;
+        // The quantum: 2^-36 of the narrowest followed cell, rounded down to a power of two (place()).
+        double narrowest = std::numeric_limits<double>::max();
+        for (int axis = 0; axis < 2; ++axis) {
+            if (!bodies[b].follow[axis]) continue;
+            const std::vector<double> lines = axis_lines(axis == 0 ? config.x : config.y);
+            for (std::size_t k = 0; k + 1 < lines.size(); ++k) narrowest = std::min(narrowest, lines[k + 1] - lines[k]);
+        }
         frame.emplace(b, bodies[b].follow, bodies[b].centre, std::array<double, 2>{config.x.start, config.y.start},
-                      translate);
+                      translate, std::ldexp(1.0, std::ilogb(narrowest) - 36));
         for (int axis = 0; axis < 2; ++axis) {
             if (!bodies[b].follow[axis]) continue;
             if (const int s = wall_across(types, axis); s >= 0)
@@ -67,21 +76,43 @@ void FollowingFrame::after_step(FlowSolver& flow, const Body& body) const {
     flow.set_frame_velocity({axes_[0] ? v.x() : 0.0, axes_[1] ? v.y() : 0.0});
 }
 
+void FollowingFrame::snap_lines(FlowSolver& flow) const {
+    const Grid& grid = flow.grid();
+    std::array<std::vector<double>, 2> lines = {grid.x_axis().lines(), grid.y_axis().lines()};
+    bool moved = false;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!axes_[axis]) continue;
+        for (double& l : lines[axis]) {
+            const double snapped = quantum_ * std::round(l / quantum_);
+            moved = moved || snapped != l;
+            l = snapped;
+        }
+    }
+    // Moved by at most half a quantum (1e-11 of a cell): the fields stay on their lines, the pressure history holds.
+    if (moved) flow.set_grid_lines(std::move(lines[0]), std::move(lines[1]), true);
+}
+
 void FollowingFrame::place(FlowSolver& flow, const Body& body) const {
     if (!translate_) return;
     // The lines moved by what separates the body from its place on them; the fields stay on their lines. The place
     // is kept to round-off, not to a drift of microns: a side on a grid line stays on it (a side jittering across a
     // line switched its faces between shut and open: the window's free fall spiked to 6 times its weight with a
     // drift taken back by the grid's velocity, and rippled by 3 % at its terminal speed with the body's predicted
-    // place a dt^2 a / 2 off the lines). Moves below 1e-12 of a cell are round-off left by the last one: a second
-    // call leaves the lines as they are, so a restart, which calls it once more, repeats the straight run bit for
-    // bit.
+    // place a dt^2 a / 2 off the lines).
+    // The move is a multiple of the quantum (2^-36 of a cell, rounded to a power of two), the lines sit on its
+    // multiples, so every line moves exactly, without round-off: the spacings stay the same bit for bit, and so
+    // does everything a body that keeps its place computes from them (its cut faces, the pressure matrix, the
+    // response of the exact coupling, which ibm/immersed_boundary.cpp then keeps from step to step). Exact while
+    // the lines lie within 2^53 quanta (2^17 cells) of the origin. A move is made when the body is more than 3/4 of
+    // a quantum off its place, and leaves it within half a quantum and round-off: a second call leaves the lines as
+    // they are, so a restart, which calls it once more, repeats the straight run bit for bit (up to 2^14 cells from
+    // the origin, where the round-off of the body's place reaches a quarter of a quantum).
+    snap_lines(flow);
     std::array<double, 2> shift{0.0, 0.0};
     for (int axis = 0; axis < 2; ++axis) {
         if (!axes_[axis]) continue;
         const double drift = offset(flow, body, axis);
-        const double cell = along(flow, axis).width(0);
-        if (std::abs(drift) > 1e-12 * cell) shift[axis] = drift;
+        if (std::abs(drift) > 0.75 * quantum_) shift[axis] = quantum_ * std::round(drift / quantum_);
     }
     if (shift[0] != 0.0 || shift[1] != 0.0) flow.translate_grid(shift[0], shift[1]);
 }

@@ -41,9 +41,15 @@ namespace chute {
 
 class FollowingFrame {
 public:
+    // quantum: translating, the step (m) the lines move by (a power of two: lines on its multiples move exactly).
     FollowingFrame(std::size_t body, std::array<bool, 2> axes, std::array<double, 2> body_start,
-                   std::array<double, 2> domain_start, bool translate)
-        : body_(body), axes_(axes), body_start_(body_start), domain_start_(domain_start), translate_(translate) {}
+                   std::array<double, 2> domain_start, bool translate, double quantum = 0.0)
+        : body_(body),
+          axes_(axes),
+          body_start_(body_start),
+          domain_start_(domain_start),
+          translate_(translate),
+          quantum_(quantum) {}
     // The followed body of a case, if any. std::invalid_argument, naming the key, when two bodies ask to be followed,
     // a wall or slip side lies across the motion (it would move with the grid: give an inflow at rest ahead, an
     // outflow behind, or a periodic pair), or (whole cells) a followed axis is not uniform.
@@ -68,8 +74,11 @@ private:
     std::array<bool, 2> axes_;
     std::array<double, 2> body_start_, domain_start_;  // the case's: where the body starts on the grid's first lines
     bool translate_;                                   // the grid translates (sharp), else moves by whole cells
+    double quantum_;                                   // translating: what the lines move by is a multiple of it
     // The body's distance along an axis from where it started on the grid.
     double offset(const FlowSolver& flow, const Body& body, int axis) const;
+    // Translating: the followed axes' lines on multiples of the quantum (once; a restart finds them there).
+    void snap_lines(FlowSolver& flow) const;
     static const Axis& along(const FlowSolver& flow, int axis) {
         return axis == 0 ? flow.grid().x_axis() : flow.grid().y_axis();
     }

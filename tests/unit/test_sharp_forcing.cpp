@@ -229,8 +229,11 @@ TEST(SharpForcing, PressureExtendsIntoCoveredCellsFromTheFluidAlone) {
 // faces, A alpha n summed over the four, plus the surface's piece L n_s, vanish (the divergence theorem for the polygon
 // of fluid in the cell), so the sum is along the surface's normal, of length L <= sqrt(2) h. This is what makes a rigid
 // motion's flux through a cut cell, A (alpha u + (1 - alpha) U_b) with u = U_b, divergence-free, and a moving surface's
-// pressure problem change continuously (ibm/cut_faces.hpp). Exact for a straight surface: held to 1e-12 at five angles;
-// the cells entirely inside are shut, those entirely outside open.
+// pressure problem change continuously (ibm/cut_faces.hpp). Exact for a straight surface up to the on-surface
+// tolerance: a face cut within 1e-8 of an end counts as whole (a corner of the grid on the surface is taken inside
+// 1e-9 of a cell away: at 45 degrees, through the grid's corners, the sum is 1e-9 h long beside its sqrt(2) h; before
+// the whole faces, 1e-12), held to 1e-8 at five angles; the cells entirely inside are shut, those entirely outside
+// open.
 TEST(CutFaces, OpenFractionsCloseEachCutCellAlongTheSurface) {
     for (double angle : {0.0, 22.5, 30.0, 45.0, 61.0}) {
         const Grid grid(Axis(uniform_lines(0.0, 1.0, 40), false), Axis(uniform_lines(0.0, 1.0, 36), false),
@@ -264,7 +267,7 @@ TEST(CutFaces, OpenFractionsCloseEachCutCellAlongTheSurface) {
         MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_INT, MPI_SUM, grid.comm());
         across = worst[0], longest = worst[1], cut_cells = counts[0], wrong = counts[1];
         EXPECT_LT(across, 1e-8) << "angle " << angle;
-        EXPECT_LE(longest, std::sqrt(2.0) + 1e-12) << "angle " << angle;
+        EXPECT_LE(longest, std::sqrt(2.0) + 1e-8) << "angle " << angle << " excess " << longest - std::sqrt(2.0);
         EXPECT_GT(cut_cells, angle == 0.0 ? 0 : 30) << "angle " << angle;
         EXPECT_EQ(wrong, 0) << "angle " << angle;
     }
