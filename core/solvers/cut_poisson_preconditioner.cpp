@@ -8,16 +8,10 @@
 
 namespace chute {
 
-CutPoissonPreconditioner::CutPoissonPreconditioner(const Grid& grid, HYPRE_StructGrid hypre_grid,
-                                                   std::array<bool, 4> dirichlet_sides, int margin)
+CutPoissonPreconditioner::CutPoissonPreconditioner(const Grid& grid, std::array<bool, 4> dirichlet_sides, int margin)
     : grid_(grid), margin_(margin), direct_(grid, dirichlet_sides), source_(grid), correction_(grid) {
     lower_ = {grid_.lx().offset, grid_.ly().offset};
     upper_ = {grid_.lx().offset + grid_.nx() - 1, grid_.ly().offset + grid_.ny() - 1};
-    for (HYPRE_StructVector* v : {&x_, &y_}) {
-        HYPRE_StructVectorCreate(grid_.comm(), hypre_grid, v);
-        HYPRE_StructVectorInitialize(*v);
-        HYPRE_StructVectorAssemble(*v);
-    }
     const std::size_t n = static_cast<std::size_t>(grid_.nx()) * grid_.ny();
     volume_.resize(n);
     rhs_.resize(n);
@@ -26,11 +20,6 @@ CutPoissonPreconditioner::CutPoissonPreconditioner(const Grid& grid, HYPRE_Struc
     for (int j = 0; j < grid_.ny(); ++j)
         for (int i = 0; i < grid_.nx(); ++i)
             volume_[static_cast<std::size_t>(j) * grid_.nx() + i] = grid_.lx().w(i) * grid_.ly().w(j);
-}
-
-CutPoissonPreconditioner::~CutPoissonPreconditioner() {
-    HYPRE_StructVectorDestroy(x_);
-    HYPRE_StructVectorDestroy(y_);
 }
 
 namespace {
@@ -52,9 +41,7 @@ bool same_row(const double* cut, const double* whole) {
 
 }  // namespace
 
-bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std::vector<double>& whole,
-                                      HYPRE_StructMatrix A) {
-    matrix_ = A;
+bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std::vector<double>& whole) {
     const int nx = grid_.nx(), ny = grid_.ny();
     const int gnx = grid_.global_nx(), gny = grid_.global_ny();
     const int ox = grid_.lx().offset, oy = grid_.ly().offset;
@@ -155,10 +142,9 @@ bool CutPoissonPreconditioner::set_up(const std::vector<double>& cut, const std:
             }
         }
     }
-    Eigen::SparseMatrix<double> block(static_cast<Eigen::Index>(window_.size()),
-                                      static_cast<Eigen::Index>(window_.size()));
-    block.setFromTriplets(entries.begin(), entries.end());
-    factor_.compute(block);
+    block_.resize(static_cast<Eigen::Index>(window_.size()), static_cast<Eigen::Index>(window_.size()));
+    block_.setFromTriplets(entries.begin(), entries.end());
+    factor_.compute(block_);
     return factor_.info() == Eigen::Success;
 }
 
@@ -171,25 +157,28 @@ const std::vector<double>& CutPoissonPreconditioner::window_values(const std::ve
     return values;
 }
 
-const Eigen::VectorXd& CutPoissonPreconditioner::window_solve(const std::vector<double>& rw) {
-    window_solution_ =
-        factor_.solve(Eigen::Map<const Eigen::VectorXd>(rw.data(), static_cast<Eigen::Index>(rw.size())));
+const Eigen::VectorXd& CutPoissonPreconditioner::window_solve(const Eigen::VectorXd& rw) {
+    window_solution_ = factor_.solve(rw);
     return window_solution_;
 }
 
-void CutPoissonPreconditioner::add_window_solve(const std::vector<double>& r, std::vector<double>& x) {
-    const Eigen::VectorXd& z = window_solve(window_values(r));
-    for (std::size_t k = 0; k < window_.size(); ++k)
-        if (local_[k] >= 0) x[static_cast<std::size_t>(local_[k])] += z[static_cast<Eigen::Index>(k)];
-}
-
-void CutPoissonPreconditioner::residual(const std::vector<double>& b, const std::vector<double>& x,
-                                        std::vector<double>& r) {
-    HYPRE_StructVectorSetBoxValues(x_, lower_.data(), upper_.data(), const_cast<double*>(x.data()));
-    HYPRE_StructVectorAssemble(x_);
-    HYPRE_StructMatrixMatvec(1.0, matrix_, x_, 0.0, y_);
-    HYPRE_StructVectorGetBoxValues(y_, lower_.data(), upper_.data(), r.data());
-    for (std::size_t c = 0; c < r.size(); ++c) r[c] = b[c] - r[c];
+void CutPoissonPreconditioner::add_window_correction(std::vector<double>& z) {
+    // The window's rows of A z: the block's from z in the window, and the ring's, each rank adding those of its own
+    // cells (the matrix is symmetric: a ring coupling is the window row's too); gathered in one reduction.
+    const std::size_t n = window_.size();
+    std::vector<double>& gathered = window_buffer_;
+    gathered.assign(2 * n, 0.0);
+    for (std::size_t k = 0; k < n; ++k)
+        if (local_[k] >= 0) gathered[k] = z[static_cast<std::size_t>(local_[k])];
+    for (const RingCoupling& c : ring_)
+        gathered[n + static_cast<std::size_t>(c.window_cell)] += c.coefficient * z[static_cast<std::size_t>(c.cell)];
+    MPI_Allreduce(MPI_IN_PLACE, gathered.data(), static_cast<int>(gathered.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    const auto size = static_cast<Eigen::Index>(n);
+    const Eigen::Map<const Eigen::VectorXd> zw(gathered.data(), size), ring(gathered.data() + n, size);
+    window_residual_ = window_rhs_ - block_ * zw - ring;
+    const Eigen::VectorXd& dz = window_solve(window_residual_);
+    for (std::size_t k = 0; k < n; ++k)
+        if (local_[k] >= 0) z[static_cast<std::size_t>(local_[k])] += dz[static_cast<Eigen::Index>(k)];
 }
 
 void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x) {
@@ -204,7 +193,9 @@ void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x)
         rhs[c] = 0.0;
     }
     // The window's solve leaves no residual inside the window; outside, its cells' values reach the next cells only.
-    const Eigen::VectorXd& zw = window_solve(window_values(rhs));
+    const std::vector<double>& rhs_window = window_values(rhs);
+    window_rhs_ = Eigen::Map<const Eigen::VectorXd>(rhs_window.data(), static_cast<Eigen::Index>(rhs_window.size()));
+    const Eigen::VectorXd& zw = window_solve(window_rhs_);
     for (std::size_t k = 0; k < window_.size(); ++k)
         if (local_[k] >= 0) z[static_cast<std::size_t>(local_[k])] = zw[static_cast<Eigen::Index>(k)];
     r = rhs;
@@ -221,8 +212,7 @@ void CutPoissonPreconditioner::apply(HYPRE_StructVector b, HYPRE_StructVector x)
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) z[static_cast<std::size_t>(j) * nx + i] += correction_(i, j);
     for (const Covered& c : covered_) z[static_cast<std::size_t>(c.cell)] = 0.0;  // the whole grid's on the fluid only
-    residual(rhs, z, r);
-    add_window_solve(r, z);
+    add_window_correction(z);
     for (std::size_t k = 0; k < covered_.size(); ++k)
         z[static_cast<std::size_t>(covered_[k].cell)] = covered_rhs_[k] / covered_[k].diagonal;
     HYPRE_StructVectorSetBoxValues(x, lower_.data(), upper_.data(), z.data());

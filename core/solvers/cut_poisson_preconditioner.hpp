@@ -31,17 +31,15 @@ namespace chute {
 
 class CutPoissonPreconditioner {
 public:
-    CutPoissonPreconditioner(const Grid& grid, HYPRE_StructGrid hypre_grid, std::array<bool, 4> dirichlet_sides,
-                             int margin);
-    ~CutPoissonPreconditioner();
+    CutPoissonPreconditioner(const Grid& grid, std::array<bool, 4> dirichlet_sides, int margin);
     CutPoissonPreconditioner(const CutPoissonPreconditioner&) = delete;
     CutPoissonPreconditioner& operator=(const CutPoissonPreconditioner&) = delete;
 
     // cut, whole: this rank's coefficients of -V laplacian (5 per cell: diagonal, west, east, south, north, as
-    // PoissonSolver stores them) with and without the surfaces; A: the cut matrix as hypre holds it. Finds the
-    // window and factorises its matrix. False when the window would not pay (more than a quarter of the grid) or
-    // its matrix is singular (a region of fluid closed inside it): the caller then uses multigrid. Collective.
-    bool set_up(const std::vector<double>& cut, const std::vector<double>& whole, HYPRE_StructMatrix A);
+    // PoissonSolver stores them) with and without the surfaces. Finds the window and factorises its matrix. False when
+    // the window would not pay (more than a quarter of the grid) or its matrix is singular (a region of fluid closed
+    // inside it): the caller then uses multigrid. Collective.
+    bool set_up(const std::vector<double>& cut, const std::vector<double>& whole);
     // The lines moved (the transform axis still uniform): the direct solve's coefficients follow.
     void update_lines() { direct_.update_lines(); }
     // x = P b (hypre vectors on this rank's box). Collective.
@@ -50,20 +48,19 @@ public:
 
 private:
     const std::vector<double>& window_values(const std::vector<double>& owned);  // gathered over the ranks
-    const Eigen::VectorXd& window_solve(const std::vector<double>& window_residual);
-    void add_window_solve(const std::vector<double>& residual, std::vector<double>& x);
-    void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r);
+    const Eigen::VectorXd& window_solve(const Eigen::VectorXd& window_residual);
+    // z += the window's solve of its residual window_rhs_ - A z (the window's rows only: no product over the grid).
+    void add_window_correction(std::vector<double>& z);
 
     const Grid& grid_;
     int margin_;
     DirectPoissonSolver direct_;
-    HYPRE_StructMatrix matrix_ = nullptr;  // not owned
-    HYPRE_StructVector x_ = nullptr, y_ = nullptr;
     std::array<int, 2> lower_{}, upper_{};
-    std::vector<long long> window_;  // global cell indices (j * global_nx + i), ascending, the same on every rank
-    std::vector<int> local_;         // per window cell: its index in this rank's box, or -1
+    std::vector<long long> window_;      // global cell indices (j * global_nx + i), ascending, the same on every rank
+    std::vector<int> local_;             // per window cell: its index in this rank's box, or -1
+    Eigen::SparseMatrix<double> block_;  // the window's rows of the cut matrix, its own columns
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
-    Eigen::VectorXd window_solution_;
+    Eigen::VectorXd window_rhs_, window_residual_, window_solution_;
     // The couplings from the window's cells to this rank's cells just outside it: what a solution in the window
     // leaves in their residual (apply()'s first residual without a matrix product).
     struct RingCoupling {
@@ -82,7 +79,7 @@ private:
     Field2D source_, correction_;
     std::vector<double> volume_;         // of each owned cell
     std::vector<double> rhs_, z_, r_;    // apply()'s work, per owned cell
-    std::vector<double> window_buffer_;  // window_values()'s
+    std::vector<double> window_buffer_;  // window_values()'s, add_window_correction()'s
 };
 
 }  // namespace chute

@@ -263,7 +263,7 @@ void PoissonSolver::update_matrix() {
     if (cut_direct_used_ && matrix_ && pcg_ && cut_direct_applies()) {
         set_values(matrix_);
         null_spaces().at(pfmg_).cells = singular_ ? fluid_cells_ : 0.0;
-        if (cut_direct_->set_up(values_, whole_values_, matrix_)) return;
+        if (cut_direct_->set_up(values_, whole_values_)) return;
     }
     destroy_solver();
     if (matrix_) HYPRE_StructMatrixDestroy(matrix_);
@@ -284,10 +284,10 @@ void PoissonSolver::update_matrix() {
         // A surface cuts the problem on a grid the direct solve fits: keep it, with the window's exact solve
         // (cut_poisson_preconditioner.hpp); multigrid only where the window would not pay.
         if (!cut_direct_) {
-            cut_direct_ = std::make_unique<CutPoissonPreconditioner>(grid_, hgrid_, dirichlet_, kCutWindowMargin);
+            cut_direct_ = std::make_unique<CutPoissonPreconditioner>(grid_, dirichlet_, kCutWindowMargin);
             whole_values_ = matrix_values(false);
         }
-        if (cut_direct_->set_up(values_, whole_values_, matrix_)) {
+        if (cut_direct_->set_up(values_, whole_values_)) {
             cut_direct_used_ = true;
             pfmg_ = reinterpret_cast<HYPRE_StructSolver>(cut_direct_.get());
             null_spaces()[pfmg_] = NullSpace{singular_ ? ones_ : nullptr, singular_ ? fluid_cells_ : 0.0};

@@ -360,7 +360,8 @@ TEST(Turbulence, StudyBlockFallsAlikeWithLayersAndATranslatingGrid) {
 // criterion for the unperturbed fall: terminal speed within 1 %. Both in the example's fixed domain, 20 cells across,
 // to t = 4 s; the speed averaged over t = 3-4 s, once both are terminal (the sharp block overshoots to 2.27 m/s at
 // t = 1.5-2.5 s and comes down, the body-fitted one still gains there; the sharp block's symmetric wake breaks by
-// itself after t = 4 s). Measured 2026-11-27: 2.2525 against 2.2425 m/s (+0.45 %); the diffuse carrier 2.2846
+// itself after t = 4 s). Measured 2026-11-27: 2.2525 against 2.2425 m/s (+0.45 %); since the exact coupling (seventh
+// step) 2.2577 (+0.68 %, 2026-11-28); the diffuse carrier 2.2846
 // (+1.9 %). docs/validation.md, "Sharp interface", sixth step. Slow: 3-5 minutes on 2 ranks.
 TEST(Turbulence, StudyBlockFallsOnTheSharpCarrierAsBodyFitted) {
     auto terminal = [](const std::string& example, const std::vector<std::string>& settings) {
@@ -391,9 +392,10 @@ TEST(Turbulence, StudyBlockFallsOnTheSharpCarrierAsBodyFitted) {
 // cells), the grid translating with the block along y (the body-fitted grid by carrying the hole, the sharp one by
 // `follow: y`), to t = 8 s; the wake takes until t = 4 s to settle, so the mean is over t = 4-8 s (14 shedding
 // periods). Measured 2026-11-28: sharp 2.0682 m/s against 2.0768 (-0.41 %), lateral force rms 542 N against 527 N
-// (+2.8 %). On a grid at rest along y the sharp block fell 2.1 % fast and shed 23 % more weakly (its faces crossing
-// the cells smear the boundary layer: docs/validation.md, "Sharp interface", ninth step). Held to the 1 %;
-// the lateral force to 10 % (the C_L rms criterion for the Lyn square). Slow: about 5 minutes on 2 ranks.
+// (+2.8 %); re-measured the same day (session 29): 2.0683 against 2.0768, 536 N against 521 N (+2.9 %). On a grid at
+// rest along y the sharp block fell 2.1 % fast and shed 23 % more weakly (its faces crossing the cells smear the
+// boundary layer: docs/validation.md, "Sharp interface", ninth step). Held to the 1 %; the lateral force to 10
+// % (the C_L rms criterion for the Lyn square). Slow: about 5 minutes on 2 ranks.
 TEST(Turbulence, StudyBlockShedsOnTheSharpCarrierAsBodyFitted) {
     struct Shedding {
         double speed, lateral_rms;
