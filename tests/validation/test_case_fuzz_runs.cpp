@@ -1,6 +1,6 @@
 // Fuzzing whole runs: mutated example cases run by the chute binary for two steps (label slow, not in CI).
 //
-// Checks: 20 cases from each example (examples/*/*.yaml; 620 from 31 on 2026-11-27), each the example with one or two
+// Checks: 20 cases from each example (examples/*/*.yaml; 640 from 32 on 2026-11-28), each the example with one or two
 // of its values swapped through --set for an extreme or a rescaled copy (tests/fuzz/case_mutator.hpp: 0, -1,
 // +-1e300, nan, inf, 2147483647, 1e6, [], ..., or the value x10, x0.1, x2, x0.5, negated, +1), so the YAML
 // stays valid and a good share pass the reader and run. Each runs as
@@ -196,8 +196,12 @@ TEST(CaseFuzzRuns, MutatedExamplesRunOrStopWithAMessage) {
         cases, examples.size(), static_cast<unsigned long long>(kSeed), counts.c_str(), crashes, hangs, slowest,
         (dir / "report.txt").string().c_str());
     EXPECT_GE(cases, 300);
-    // A good share of the mutated cases must get past the reader, or the solver is not being fuzzed.
-    EXPECT_GT(by_exit_code[0] + by_exit_code[3], cases / 4);
+    // A good share of the mutated cases must get past the reader, or the solver is not being fuzzed. Measured: 26 %
+    // (94 of 360, 2026-11-23), 25.8 % (160 of 620, 2026-11-25), 23.6 % (151 of 640, 2026-11-28, with the sharp window
+    // example: a new example shifts every later example's seeds). The share is binomial, about 1.7 % (11 cases) of
+    // spread at 640 cases, so the bound of a quarter it had was a coin flip; a sixth is 4 spreads under it and still
+    // catches a reader that stopped letting the mutated values through.
+    EXPECT_GT(by_exit_code[0] + by_exit_code[3], cases / 6);
 }
 
 }  // namespace
