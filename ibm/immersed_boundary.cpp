@@ -117,7 +117,7 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     // is the same bit for bit (a body keeping its place on a grid that translates with it): the same matrix.
     if (cut_ && flow_ && (cut_->update() || !pressure_boundary_set_)) {
         std::vector<double> inputs = pressure_inputs();
-        if (!pressure_boundary_set_ || !same_everywhere(inputs, pressure_inputs_)) {
+        if (!pressure_boundary_set_ || !on_every_rank(same_bits(inputs, pressure_inputs_))) {
             set_pressure_boundary();
             pressure_inputs_ = std::move(inputs);
         }
@@ -224,10 +224,10 @@ std::vector<double> ImmersedBoundary::pressure_inputs() const {
     return in;
 }
 
-bool ImmersedBoundary::same_everywhere(const std::vector<double>& a, const std::vector<double>& b) const {
-    int same = same_bits(a, b);
-    MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_LAND, grid_.comm());
-    return same != 0;
+bool ImmersedBoundary::on_every_rank(bool holds) const {
+    int all = holds;
+    MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_LAND, grid_.comm());
+    return all != 0;
 }
 
 const FlowSolver::BodyResponse& ImmersedBoundary::response(std::size_t b, const std::vector<Velocity>& unit) {
@@ -238,11 +238,10 @@ const FlowSolver::BodyResponse& ImmersedBoundary::response(std::size_t b, const 
     // the step; docs/performance.md). Kept only when the matrix is the one it was solved with and the unit motions'
     // shut-face velocities are the same bit for bit, so that the kept response is the one a restart solves afresh.
     std::optional<KeptResponse>& kept = kept_response_[b];
-    int same = kept && kept->matrix == pressure_matrix_ && kept->unit.size() == unit.size();
+    bool same = kept && kept->matrix == pressure_matrix_ && kept->unit.size() == unit.size();
     for (std::size_t k = 0; same && k < unit.size(); ++k)
         same = same_bits(kept->unit[k].u.raw(), unit[k].u.raw()) && same_bits(kept->unit[k].v.raw(), unit[k].v.raw());
-    MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_LAND, grid_.comm());
-    if (!same) {
+    if (!on_every_rank(same)) {
         kept = KeptResponse{pressure_matrix_, unit, flow_->cut_response(unit)};
         ++responses_solved_;
     }

@@ -124,8 +124,8 @@ private:
     // What the cut pressure problem's matrix is made of: the cut faces' apertures, the cells with flow and the grid's
     // spacings, this rank's part.
     std::vector<double> pressure_inputs() const;
-    // a and b the same bit for bit on every rank. Collective.
-    bool same_everywhere(const std::vector<double>& a, const std::vector<double>& b) const;
+    // `holds` true on every rank. Collective.
+    bool on_every_rank(bool holds) const;
     std::vector<double> pressure_inputs_;  // of the matrix set last
     std::size_t pressure_matrix_ = 0;      // counts the matrices set (set_pressure_boundary)
     struct KeptResponse {

@@ -77,19 +77,18 @@ void FollowingFrame::after_step(FlowSolver& flow, const Body& body) const {
 }
 
 void FollowingFrame::snap_lines(FlowSolver& flow) const {
-    const Grid& grid = flow.grid();
-    std::array<std::vector<double>, 2> lines = {grid.x_axis().lines(), grid.y_axis().lines()};
-    bool moved = false;
-    for (int axis = 0; axis < 2; ++axis) {
-        if (!axes_[axis]) continue;
-        for (double& l : lines[axis]) {
-            const double snapped = quantum_ * std::round(l / quantum_);
-            moved = moved || snapped != l;
-            l = snapped;
-        }
-    }
+    const auto snapped = [&](double l) { return quantum_ * std::round(l / quantum_); };
+    const auto on_multiples = [&](int axis) {
+        const std::vector<double>& lines = along(flow, axis).lines();
+        return !axes_[axis] || std::all_of(lines.begin(), lines.end(), [&](double l) { return snapped(l) == l; });
+    };
+    if (on_multiples(0) && on_multiples(1)) return;  // every call but the first of a run
+    std::array<std::vector<double>, 2> lines = {flow.grid().x_axis().lines(), flow.grid().y_axis().lines()};
+    for (int axis = 0; axis < 2; ++axis)
+        if (axes_[axis])
+            for (double& l : lines[axis]) l = snapped(l);
     // Moved by at most half a quantum (1e-11 of a cell): the fields stay on their lines, the pressure history holds.
-    if (moved) flow.set_grid_lines(std::move(lines[0]), std::move(lines[1]), true);
+    flow.set_grid_lines(std::move(lines[0]), std::move(lines[1]), true);
 }
 
 void FollowingFrame::place(FlowSolver& flow, const Body& body) const {

@@ -43,7 +43,7 @@ class FollowingFrame {
 public:
     // quantum: translating, the step (m) the lines move by (a power of two: lines on its multiples move exactly).
     FollowingFrame(std::size_t body, std::array<bool, 2> axes, std::array<double, 2> body_start,
-                   std::array<double, 2> domain_start, bool translate, double quantum = 0.0)
+                   std::array<double, 2> domain_start, bool translate, double quantum)
         : body_(body),
           axes_(axes),
           body_start_(body_start),
