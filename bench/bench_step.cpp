@@ -11,6 +11,11 @@
 // timed, best of `--poisson-repeats` (default 3), for comparison with STACK.md.
 // `--kernels` adds a table of the step's parts timed one by one (convection, diffusion, ...), each from cold
 // caches, as within a step (the Poisson solve in between streams far more data than the last-level cache).
+// `--body` adds the carriers' cost: the same cavity with a square of side 0.25 at its centre, turned 22.5 degrees (no
+// side on a grid line), held fixed or oscillating and turning (x = 0.5 + 0.05 sin(2 pi t), angle 22.5 + 20 sin(2 pi
+// t) degrees: every step moves it across the cells), on each immersed carrier: the diffuse interface and the sharp
+// one with forcing and with ghost faces (numerics.ibm.*). Whole steps (run/step.hpp take_step and the force
+// measures), per cell and against the diffuse carrier's (issue "Sharp corners" asks at most 1.3 times).
 // Rank 0 prints Markdown tables.
 #include <HYPRE_utilities.h>
 #include <mpi.h>
@@ -28,13 +33,16 @@
 #include <vector>
 
 #include "boundary_conditions.hpp"
+#include "case_file.hpp"
 #include "convection.hpp"
 #include "diagnostics.hpp"
 #include "diffusion.hpp"
 #include "flow_solver.hpp"
 #include "halo_exchange.hpp"
+#include "model.hpp"
 #include "poisson_solver.hpp"
 #include "projection.hpp"
+#include "step.hpp"
 #include "time_step_control.hpp"
 #include "triad.hpp"
 
@@ -52,6 +60,7 @@ struct Options {
     double min_seconds = 2.0;
     int poisson_repeats = 3;
     bool kernels = false;
+    bool body = false;
 };
 
 // The lid-driven cavity at Re 1000: the flow alone (the benchmark times the flow solver).
@@ -224,10 +233,87 @@ std::vector<KernelRow> time_kernels(FlowSolver& s, int repeats) {
     return rows;
 }
 
+// The cavity of cavity_case(n) with the square of the body case (above), on `interface` (diffuse, or sharp with
+// `faces`), fixed or moving.
+std::string body_case_text(int n, const std::string& interface, const std::string& faces, bool moving) {
+    std::string motion = moving ? "    motion: {type: oscillation, amplitude: [0.05, 0.0], angular_amplitude: 20.0, "
+                                  "frequency: 1.0}\n"
+                                : "";
+    std::string ibm = interface == "diffuse" ? "" : ", ibm: {interface: sharp, sharp_faces: " + faces + "}";
+    char grid[160];
+    std::snprintf(grid, sizeof grid, "  x: {start: 0.0, end: 1.0, cells: %d}\n  y: {start: 0.0, end: 1.0, cells: %d}\n",
+                  n, n);
+    return "name: bench_body\ndomain:\n" + std::string(grid) +
+           "fluid: {density: 1.0, viscosity: 0.001}\n"
+           "boundaries:\n  left: {type: wall}\n  right: {type: wall}\n  bottom: {type: wall}\n"
+           "  top: {type: wall, velocity: [1.0, 0.0]}\n"
+           "bodies:\n  square:\n    shape: rectangle\n    centre: [0.5, 0.5]\n    size: [0.25, 0.25]\n"
+           "    angle: 22.5\n" +
+           motion + "numerics: {convection: central, cfl: 0.5" + ibm + "}\ntime: {end: 1000.0}\n";
+}
+
+struct BodyRow {
+    int n = 0;
+    std::string carrier;
+    bool moving = false;
+    long steps = 0;
+    double seconds = 0, bodies = 0, poisson = 0;
+};
+
+BodyRow time_body_case(int n, const std::string& interface, const std::string& faces, bool moving, const Options& opt) {
+    const CaseConfig c = parse_case_text(body_case_text(n, interface, faces, moving));
+    Model model(c, MPI_COMM_WORLD);
+    auto step = [&](StageTimer* stages) {
+        take_step(model, model.stable_dt(), stages);
+        measure_forces(model, stages);
+    };
+    for (int k = 0; k < opt.warmup; ++k) step(nullptr);
+    MPI_Barrier(MPI_COMM_WORLD);
+    auto t0 = Clock::now();
+    step(nullptr);
+    double probe = since(t0);
+    MPI_Bcast(&probe, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const long count = std::max<long>(opt.min_steps, static_cast<long>(std::ceil(opt.min_seconds / probe)));
+    StageTimer stages(kStepStages);
+    BodyRow row{n, interface == "diffuse" ? "diffuse" : "sharp, " + faces + " faces", moving, count};
+    MPI_Barrier(MPI_COMM_WORLD);
+    t0 = Clock::now();
+    for (long k = 0; k < count; ++k) step(&stages);
+    MPI_Barrier(MPI_COMM_WORLD);
+    row.seconds = since(t0);
+    row.bodies = stages.seconds("bodies");
+    row.poisson = stages.seconds("poisson");
+    if (!std::isfinite(kinetic_energy(model.flow().grid(), model.flow().velocity()))) {
+        int rank = 0;
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        if (rank == 0) std::fprintf(stderr, "bench_step: the body case (%s) diverged\n", row.carrier.c_str());
+        MPI_Abort(MPI_COMM_WORLD, 3);
+    }
+    return row;
+}
+
+void print_body_rows(const std::vector<BodyRow>& rows, int size) {
+    std::printf("\n### Body case (the cavity with a square turned 22.5 degrees, side 0.25), %d rank%s\n\n", size,
+                size > 1 ? "s" : "");
+    std::printf(
+        "| grid | square | carrier | steps | us / cell-step | against diffuse | bodies share | Poisson share |\n"
+        "|---|---|---|---|---|---|---|---|\n");
+    for (const BodyRow& r : rows) {
+        const double cells = static_cast<double>(r.n) * r.n;
+        double diffuse = 0.0;
+        for (const BodyRow& d : rows)
+            if (d.n == r.n && d.moving == r.moving && d.carrier == "diffuse") diffuse = d.seconds / d.steps;
+        const double per_step = r.seconds / r.steps;
+        std::printf("| %d^2 | %s | %s | %ld | %.3f | %.2fx | %.0f %% | %.0f %% |\n", r.n, r.moving ? "moving" : "fixed",
+                    r.carrier.c_str(), r.steps, 1e6 * per_step / cells, diffuse > 0 ? per_step / diffuse : 0.0,
+                    100 * r.bodies / r.seconds, 100 * r.poisson / r.seconds);
+    }
+}
+
 void usage() {
     std::fprintf(stderr,
                  "usage: bench_step [--warmup N] [--min-steps N] [--min-seconds S] [--poisson-repeats N] "
-                 "[--kernels] [GRID ...]\n");
+                 "[--kernels] [--body] [GRID ...]\n");
 }
 
 }  // namespace
@@ -260,6 +346,8 @@ int main(int argc, char** argv) {
             opt.poisson_repeats = std::atoi(value());
         else if (arg == "--kernels")
             opt.kernels = true;
+        else if (arg == "--body")
+            opt.body = true;
         else if (arg == "-h" || arg == "--help") {
             if (root) usage();
             HYPRE_Finalize();
@@ -359,6 +447,14 @@ int main(int argc, char** argv) {
         poisson.push_back(prow);
     }
 
+    std::vector<BodyRow> body_rows;
+    if (opt.body)
+        for (const int n : opt.grids)
+            for (const bool moving : {false, true})
+                for (const auto& [interface, faces] :
+                     {std::pair<std::string, std::string>{"diffuse", ""}, {"sharp", "forcing"}, {"sharp", "ghost"}})
+                    body_rows.push_back(time_body_case(n, interface, faces, moving, opt));
+
     if (root) {
         std::printf("### Time step, %d rank%s\n\n", size, size > 1 ? "s" : "");
         std::printf(
@@ -417,6 +513,7 @@ int main(int argc, char** argv) {
                 }
             std::printf(".\n");
         }
+        if (opt.body) print_body_rows(body_rows, size);
         std::printf("\nLoad average at end: %s\n", load_average().c_str());
     }
     const bench::Triad triad_end = bench::measure_triad(MPI_COMM_WORLD);
