@@ -518,7 +518,15 @@ void FlowSolver::explicit_rhs(const Velocity& vel, Velocity& rhs) const {
         halo_->exchange(wall_faces_halo_);
         wall = &wall_faces_halo_;
     }
-    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, line_velocities(), wall);
+    const Velocity* transport = nullptr;
+    if (cut_.cells && cut_.cut_transport) {
+        transport_ = vel;  // the domain's boundary faces and the halo, then the cut fluxes on the owned faces
+        cut_flux(vel, transport_);
+        halo_->exchange(transport_);
+        transport = &transport_;
+    }
+    convection(*grid_, config_.convection, vel, bc_->u_first(), bc_->v_first(), rhs, line_velocities(), wall,
+               transport);
     if (implicit_now_)
         add_cross_stress(*grid_, config_.viscosity, eddy_, vel, bc_->u_first(), bc_->v_first(), rhs);
     else if (eddy_on_)

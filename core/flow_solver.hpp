@@ -121,6 +121,8 @@ public:
         const Field2D* aperture_v = nullptr;
         const Velocity* body_velocity = nullptr;
         const Velocity* flux_offset = nullptr;
+        // The convection transported by these fluxes instead of the velocities (core/operators/convection.hpp).
+        bool cut_transport = false;
     };
     void set_pressure_boundary(const PressureBoundary& boundary);
     // Faces a sharp immersed surface sets from inside its bodies (nonzero; the owned faces, null: none): the
@@ -256,6 +258,7 @@ private:
     PressureBoundary cut_;                        // set_pressure_boundary()
     mutable Velocity flux_;                       // alpha u + (1 - alpha) U_b on the faces, with cut_ (cut_flux)
     mutable Velocity offset_;                     // cut_.flux_offset with its halo (cut_flux)
+    mutable Velocity transport_;                  // the cut fluxes that transport the momentum (cut_transport)
     const Velocity* wall_faces_ = nullptr;        // set_wall_faces()
     mutable Velocity wall_faces_halo_;            // *wall_faces_ with its halo (explicit_rhs)
     double weight_new_ = 1.0, weight_old_ = 0.0;  // the last step's AB2 weights of H^n and H^{n-1}

@@ -27,13 +27,8 @@ double surface_distance(const Body& body, const Vec2& point, double tolerance) {
     return d < tolerance ? std::min(d, -tolerance) : d;
 }
 
-namespace {
-
-// A face cut within this fraction of its length from an end counts as whole (CutFaces::update).
-constexpr double kWholeFace = 1e-8;
-
-// The fraction of the segment a-b outside `body`, `a` outside and `b` inside: the crossing by bisection (to 1e-12 of
-// the segment), exact for straight and curved surfaces alike; one crossing (a convex body).
+// The crossing by bisection (to 1e-12 of the segment), exact for straight and curved surfaces alike; one crossing (a
+// convex body).
 double open_fraction(const Body& body, const Vec2& a, const Vec2& b, double tolerance) {
     double out = 0.0, in = 1.0;  // fractions along a-b known outside and inside
     for (int k = 0; k < 40; ++k) {
@@ -42,8 +37,6 @@ double open_fraction(const Body& body, const Vec2& a, const Vec2& b, double tole
     }
     return 0.5 * (out + in);
 }
-
-}  // namespace
 
 bool CutFaces::update() {
     const bool moves = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves(); });

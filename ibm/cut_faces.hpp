@@ -33,6 +33,12 @@ inline double on_surface_tolerance(double h) { return 1e-9 * h; }
 // the surface taken inside (at most -tolerance).
 double surface_distance(const Body& body, const Vec2& point, double tolerance);
 
+// A face cut within this fraction of its length from an end counts as whole (CutFaces::update, SharpForcing).
+inline constexpr double kWholeFace = 1e-8;
+// The fraction of the segment a-b outside `body`, `a` outside and `b` inside (points within `tolerance` of the surface
+// inside, as surface_distance counts them).
+double open_fraction(const Body& body, const Vec2& a, const Vec2& b, double tolerance);
+
 class CutFaces {
 public:
     CutFaces(const Grid& grid, const std::vector<Body>& bodies);

@@ -17,6 +17,9 @@ struct IbmConfig {
     // Which faces the sharp interface reconstructs: the fluid faces beside the surface (forcing, Fadlun et al. 2000)
     // or the faces inside it beside the fluid (ghost, Tseng & Ferziger 2003), the fluid faces then free.
     enum class SharpFaces { forcing, ghost } sharp_faces = SharpFaces::forcing;
+    // Ghost faces: the faces a surface cuts keep their own momentum, with the wall in their viscous stencils where it
+    // lies, and the convection is transported by the cut fluxes (sharp_forcing.hpp, "cut momentum").
+    bool cut_momentum = false;
     // The sharp interface's profile beside the surface (sharp_forcing.hpp): automatic (quadratic in laminar runs;
     // with a wall-function model the law of the wall on forcing faces, the mirror on ghost faces), or one of them.
     enum class SharpProfileChoice {

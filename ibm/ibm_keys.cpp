@@ -34,6 +34,17 @@ std::vector<CaseKey> ibm_keys() {
          .meaning = "Sharp interface: which faces the profile sets. `forcing`: the fluid faces beside the surface "
                     "(Fadlun et al. 2000); `ghost`: the faces inside the body beside the fluid, extrapolated through "
                     "the wall so that every fluid face keeps its own momentum equation (Tseng & Ferziger 2003)."},
+        {.path = "numerics.ibm.cut_momentum",
+         .type = K::boolean,
+         .default_value = "false",
+         .when_key = "sharp_faces",
+         .when_values = {"ghost"},
+         .meaning = "Ghost faces: every face with an open part keeps its own momentum equation (a face is a ghost "
+                    "only when the surface shuts it whole), the viscous term of a face beside the surface takes the "
+                    "wall where it lies along each grid line (Shortley-Weller, from the middle of a cut face's open "
+                    "part) and the convection is transported by the faces' cut fluxes: the force follows the body's "
+                    "place in its cells continuously (docs/validation.md, \"Sharp interface\", thirteenth step). "
+                    "Laminar runs only so far."},
         {.path = "numerics.ibm.sharp_profile",
          .type = K::choice,
          .default_value = "auto",
@@ -134,6 +145,7 @@ IbmConfig read_ibm(const CaseReader& r) {
     m.sharp_faces = r.choice<IbmConfig::SharpFaces>(
         "numerics.ibm.sharp_faces",
         {{"forcing", IbmConfig::SharpFaces::forcing}, {"ghost", IbmConfig::SharpFaces::ghost}});
+    m.cut_momentum = r.boolean("numerics.ibm.cut_momentum");
     using P = IbmConfig::SharpProfileChoice;
     m.sharp_profile = r.choice<P>("numerics.ibm.sharp_profile", {{"auto", P::automatic},
                                                                  {"linear", P::linear},

@@ -64,6 +64,10 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       wrench_(bodies.size()),
       coupling_(bodies.size()),
       kept_response_(bodies.size()) {
+    if (settings.ibm.cut_momentum && settings.ibm.interface == Interface::sharp && settings.wall_profile)
+        throw std::invalid_argument(
+            "numerics.ibm.cut_momentum: not yet with a turbulence model (its wall terms are the laminar viscous "
+            "stress; turbulence.model: laminar, or leave cut_momentum false)");
     if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,
@@ -109,6 +113,7 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
     if (sharp_ && flow_)
         sharp_->set_eddy_viscosity(flow_->turbulent() ? &std::as_const(*flow_).eddy_viscosity().cell : nullptr);
+    if (sharp_ && flow_) sharp_->set_start_velocity(&std::as_const(*flow_).velocity());
     forcing_->apply(predicted, dt);
     // Ghost faces: the pressure problem follows the surfaces where they are now, through the open fraction of each
     // face (ibm/cut_faces.hpp). With a moving body its matrix and multigrid hierarchy are rebuilt every step: PCG then
@@ -135,8 +140,8 @@ void ImmersedBoundary::impose(Velocity& predicted, double dt) {
 
 void ImmersedBoundary::set_pressure_boundary() {
     ++pressure_matrix_;
-    flow_->set_pressure_boundary(
-        {&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity(), &sharp_->open_flux()});
+    flow_->set_pressure_boundary({&cut_->open_cells(), &cut_->aperture_u(), &cut_->aperture_v(), &cut_->body_velocity(),
+                                  &sharp_->open_flux(), sharp_->cut_momentum()});
     pressure_boundary_set_ = true;
 }
 

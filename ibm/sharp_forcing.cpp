@@ -49,6 +49,7 @@ SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std:
       profile_(profile),
       viscosity_(viscosity),
       ghost_(config.sharp_faces == IbmConfig::SharpFaces::ghost),
+      cut_momentum_(ghost_ && config.cut_momentum),
       wall_profile_(std::move(wall_profile)),
       uncovered_(grid, 1.0),
       result_(bodies.size()),
@@ -115,10 +116,17 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                     continue;
                 }
                 bool across = false;
-                const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
-                                            position(i, j + 1)};
-                for (const Vec2& q : neighbours)
-                    across = across || (outline.signed_distance(body.to_body(q)) < surface) != inside;
+                if (cut_momentum_) {
+                    // Inside here. A face with an open part is a fluid face; a shut one a ghost beside one.
+                    if (face_cut(b, is_u, i, j).alpha > 0.0) continue;
+                    for (const auto& [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
+                        across = across || face_cut(b, is_u, i + di, j + dj).alpha > 0.0;
+                } else {
+                    const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
+                                                position(i, j + 1)};
+                    for (const Vec2& q : neighbours)
+                        across = across || (outline.signed_distance(body.to_body(q)) < surface) != inside;
+                }
                 if (!inside && !across) continue;
                 const SurfacePoint s = outline.nearest(body.to_body(p));
                 candidates.push_back({i, j, static_cast<int>(b), volume(i, j), p, phi, body.to_world(s.position),
@@ -193,9 +201,123 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
             if (q.i == out.forcing[k].i && q.j == out.forcing[k].j) out.self[k] += q.weight;
 }
 
+SharpForcing::FaceCut SharpForcing::face_cut(std::size_t b, bool is_u, int i, int j) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const Vec2 A(X.f(i), Y.f(j));
+    const Vec2 B = is_u ? Vec2(X.f(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.f(j));
+    const Vec2 centre = 0.5 * (A + B);
+    const auto [a, b_end] = end_distances(b, is_u, i, j);
+    if ((a < 0.0) == (b_end < 0.0)) return {a < 0.0 ? 0.0 : 1.0, centre};
+    const Vec2 outer = a >= 0.0 ? A : B, inner = a >= 0.0 ? B : A;
+    const double alpha = open_fraction(bodies_[b], outer, inner, on_surface(b));
+    if (alpha < kWholeFace) return {0.0, centre};  // CutFaces' rule: that near an end, whole
+    if (alpha > 1.0 - kWholeFace) return {1.0, centre};
+    return {alpha, outer + 0.5 * alpha * (inner - outer)};
+}
+
+void SharpForcing::find_wall_stencils() {
+    wall_stencils_.clear();
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const int nx = grid_.nx(), ny = grid_.ny();
+    for (const bool is_u : {true, false}) {
+        const int first_i = is_u && !grid_.x_axis().periodic() && X.offset == 0 ? 1 : 0;
+        const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
+        auto centre = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
+        const int along = is_u ? 1 : 0;  // the axis of the face's segment: a cut moves its point along it
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            const Body& body = bodies_[b];
+            int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
+            if (body.outline().closed()) {
+                const Vec2 c = body.state().centre;
+                const double reach = body.outline().reach() + 2.0 * cell_size_[b];
+                while (i0 <= i1 && centre(i0, 0).x() < c.x() - reach - X.w(i0)) ++i0;
+                while (i1 >= i0 && centre(i1, 0).x() > c.x() + reach + X.w(i1)) --i1;
+                while (j0 <= j1 && centre(0, j0).y() < c.y() - reach - Y.w(j0)) ++j0;
+                while (j1 >= j0 && centre(0, j1).y() > c.y() + reach + Y.w(j1)) --j1;
+            }
+            for (int j = j0; j <= j1; ++j)
+                for (int i = i0; i <= i1; ++i) {
+                    const FaceCut F = face_cut(b, is_u, i, j);
+                    if (F.alpha <= 0.0) continue;
+                    WallStencil w;
+                    w.i = i;
+                    w.j = j;
+                    w.body = static_cast<int>(b);
+                    w.is_u = is_u;
+                    for (int d = 0; d < 2; ++d) {
+                        const int step[2] = {d == 0 ? 1 : 0, d == 0 ? 0 : 1};
+                        bool active = F.alpha < 1.0 && d == along;
+                        for (int side = 0; side < 2; ++side) {
+                            const int sign = side == 0 ? -1 : 1;
+                            const int gi = i + sign * step[0], gj = j + sign * step[1];
+                            const Vec2 offset = centre(gi, gj) - centre(i, j);
+                            w.uniform[d][side] = std::abs(offset[d]);
+                            const FaceCut G = face_cut(b, is_u, gi, gj);
+                            if (G.alpha > 0.0) {
+                                w.distance[d][side] = std::abs((G.point - F.point)[d]);
+                                active = active || (G.alpha < 1.0 && d == along);
+                                continue;
+                            }
+                            // Shut: the surface between the point and the neighbour's place seen from it.
+                            const double a = open_fraction(body, F.point, F.point + offset, on_surface(b));
+                            w.wall[d][side] = true;
+                            w.distance[d][side] = std::max(a, 1e-9) * w.uniform[d][side];
+                            w.wall_point[d][side] = F.point + a * offset;
+                            active = true;
+                        }
+                        w.active[d] = active;
+                        w.width[d] = 0.5 * (w.distance[d][0] + w.distance[d][1]);
+                        // The flow solver's control-volume width along d (core/operators/diffusion.cpp).
+                        w.uniform_width[d] = is_u ? (d == 0 ? X.dc(i) : Y.w(j)) : (d == 0 ? X.w(i) : Y.dc(j));
+                    }
+                    if (w.active[0] || w.active[1]) wall_stencils_.push_back(w);
+                }
+        }
+    }
+}
+
+void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
+                                       const std::function<void(const WallStencil&, double)>& account) {
+    if (!start_) throw std::logic_error("SharpForcing: cut momentum needs the step's starting velocity");
+    std::vector<double> values(wall_stencils_.size());
+    for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
+        const WallStencil& w = wall_stencils_[k];
+        const Field2D& start = w.is_u ? start_->u : start_->v;
+        const double u0 = start(w.i, w.j);
+        double sum = (w.is_u ? star.u : star.v)(w.i, w.j), diagonal = 1.0;
+        for (int d = 0; d < 2; ++d) {
+            if (!w.active[d]) continue;
+            const double u_minus = start(d == 0 ? w.i - 1 : w.i, d == 0 ? w.j : w.j - 1);
+            const double u_plus = start(d == 0 ? w.i + 1 : w.i, d == 0 ? w.j : w.j + 1);
+            sum -= dt * viscosity_ * ((u_plus - u0) / w.uniform[d][1] - (u0 - u_minus) / w.uniform[d][0]) /
+                   w.uniform_width[d];
+            for (int side = 0; side < 2; ++side) {
+                double neighbour = side == 0 ? u_minus : u_plus;
+                if (w.wall[d][side]) {
+                    const Vec2 U = bodies_[w.body].velocity_at(w.wall_point[d][side]);
+                    neighbour = w.is_u ? U.x() : U.y();
+                }
+                const double rate = dt * viscosity_ / (w.width[d] * w.distance[d][side]);
+                sum += rate * neighbour;
+                diagonal += rate;
+            }
+        }
+        values[k] = sum / diagonal;
+    }
+    for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
+        const WallStencil& w = wall_stencils_[k];
+        double& u = (w.is_u ? star.u : star.v)(w.i, w.j);
+        account(w, values[k] - u);
+        u = values[k];
+    }
+}
+
 void SharpForcing::classify() {
     classify_component(true, u_);
     classify_component(false, v_);
+    if (cut_momentum_) find_wall_stencils();
     find_covered_cells();
     if (ghost_) {
         wall_faces_.u.fill(0.0);
@@ -463,6 +585,14 @@ void SharpForcing::apply(Velocity& star, double dt) {
         sums[3 * f.body + 1] += m.y();
         sums[3 * f.body + 2] += cross(f.position - bodies_[f.body].state().centre, m);
     };
+    if (cut_momentum_)
+        apply_wall_stencils(star, dt, [&](const WallStencil& w, double change) {
+            const LocalAxis& X = grid_.lx();
+            const LocalAxis& Y = grid_.ly();
+            const Vec2 at = w.is_u ? Vec2(X.f(w.i), Y.c(w.j)) : Vec2(X.c(w.i), Y.f(w.j));
+            const double volume = w.is_u ? X.dc(w.i) * Y.w(w.j) : X.w(w.i) * Y.dc(w.j);
+            account(ForcedFace{w.i, w.j, w.body, volume, at, 0.0, at, Vec2(0.0, 0.0)}, w.is_u, change);
+        });
     for (auto [c, is_u] : {std::pair{&u_, true}, std::pair{&v_, false}}) {
         Field2D& field = is_u ? star.u : star.v;
         for (const ForcedFace& f : c->solid) {

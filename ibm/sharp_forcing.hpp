@@ -42,6 +42,24 @@
 // the next face free, as beside a body-fitted wall): either way the same on every side of a body, whatever the
 // round-off of its distance (decided by that round-off before, a square held in a stream along its diagonal, its
 // sides on grid lines, read a lateral force of 5 % of its drag on a grid symmetric about the diagonal).
+// Cut momentum (numerics.ibm.cut_momentum, ghost faces; laminar): a face is classified by its open fraction alpha (the
+// part of its segment outside the body, as CutFaces measures it) instead of its centre. Every face with alpha > 0
+// keeps its own momentum equation, its value the flow's across its open part, which the continuity equation and the
+// projection already take it for (A alpha u); a ghost is a face the surface shuts whole (alpha = 0) that has such a
+// neighbour. Classified by their centres, the faces along a side switched between fluid and ghost as the side crossed
+// their middles, and the force jumped there (by 25 % on the blocked channel at 8 cells per gap; docs/validation.md,
+// "Sharp interface", eleventh step). The viscous term of a face beside the surface then takes the wall where it lies
+// on each grid line (Shortley & Weller 1938): from the face's point (the middle of its open part; its centre when
+// whole) to each neighbour along x and y, the distance to the neighbour's point, or to the surface and the body's
+// velocity there where the neighbour is shut,
+//   nu [ (u_+ - u) / d_+ - (u - u_-) / d_- ] / ((d_+ + d_-) / 2)      per direction,
+// in place of the uniform stencil the flow solver applied (taken out with the step's starting velocity), the wall
+// parts implicit (a face a sliver of a cell from the surface is held to its velocity, not made unstable by it). A
+// cut face's value tends to the body's as its open part closes, and its neighbour's stencil to the wall's: nothing
+// jumps as a face opens or closes. The convection is transported by the cut fluxes
+// (FlowSolver::PressureBoundary::cut_transport): without that a cut face whose centre is inside received the mirrored
+// normal velocity of the ghosts across its shut side. The momentum the wall terms give the fluid is the forcing's
+// (measure (a)).
 // A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
 // The pressure: with forcing faces it is solved on the whole grid (the fast solvers stay); the projection then moves
 // the forced faces by dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U
@@ -128,6 +146,10 @@ public:
     // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
     // null: none. The field must outlive the forcing.
     void set_eddy_viscosity(const Field2D* cell_nu_t) { eddy_ = cell_nu_t; }
+    // The velocity at the start of the step, u^n (cut momentum: the uniform viscous stencil the wall terms replace).
+    // Must outlive the forcing.
+    void set_start_velocity(const Velocity* start) { start_ = start; }
+    bool cut_momentum() const { return cut_momentum_; }
     // Ghost faces: 1 on the faces strictly inside a body whose values the forcing sets (the ghost faces' mirror, the
     // body's velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are
     // fluid faces; a face on the surface holds the wall's own velocity, as a body-fitted wall's face); owned faces. The
@@ -165,6 +187,28 @@ private:
         std::vector<double> self;           // the weight of each forcing face in its own image's stencil
         std::vector<char> inside;           // ghost faces, per face key: 1 inside a body at the last classification
     };
+    // Cut momentum: a face's open fraction against body b and the point its value stands for (the middle of its open
+    // part; its centre when whole or shut).
+    struct FaceCut {
+        double alpha;
+        Vec2 point;
+    };
+    FaceCut face_cut(std::size_t b, bool is_u, int i, int j) const;
+    // The viscous stencil of a face with an open part beside the surface, per direction (x, y): the distances to its
+    // neighbours' points or to the surface (minus, plus), whether that side is the wall, and the wall's point.
+    struct WallStencil {
+        int i = 0, j = 0, body = 0;
+        bool is_u = true;
+        bool active[2] = {false, false};  // the direction's stencil differs from the uniform one
+        double distance[2][2] = {{0, 0}, {0, 0}}, uniform[2][2] = {{0, 0}, {0, 0}};
+        double width[2] = {0, 0}, uniform_width[2] = {0, 0};
+        bool wall[2][2] = {{false, false}, {false, false}};
+        Vec2 wall_point[2][2] = {{Vec2(0, 0), Vec2(0, 0)}, {Vec2(0, 0), Vec2(0, 0)}};
+    };
+    void find_wall_stencils();
+    // The wall terms on the predicted velocity (backward Euler in the face's own value); `account` receives each
+    // face's change.
+    void apply_wall_stencils(Velocity& star, double dt, const std::function<void(const WallStencil&, double)>& account);
     bool any_moves() const;
     // Classified where the bodies are now: none moves and the grid did not move under them since.
     bool classified() const;
@@ -195,8 +239,11 @@ private:
     double image_cells_;
     SharpProfile profile_;
     double viscosity_;
-    const Field2D* eddy_ = nullptr;  // set_eddy_viscosity()
-    bool ghost_;                     // numerics.ibm.sharp_faces: ghost
+    const Field2D* eddy_ = nullptr;    // set_eddy_viscosity()
+    bool ghost_;                       // numerics.ibm.sharp_faces: ghost
+    bool cut_momentum_;                // numerics.ibm.cut_momentum
+    const Velocity* start_ = nullptr;  // set_start_velocity()
+    std::vector<WallStencil> wall_stencils_;
     WallProfile wall_profile_;
     std::vector<double> cell_size_;
     Component u_, v_;

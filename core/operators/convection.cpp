@@ -13,7 +13,7 @@ namespace {
 // cells stretch, the change of their volume is the flow solver's, core/operators/line_motion.hpp).
 template <ConvectionScheme S, bool Moving>
 void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                     const LineVelocities* lv, const Velocity* wall) {
+                     const LineVelocities* lv, const Velocity* wall, const Velocity* transport) {
     // A face value between a face a sharp surface sets (wall) and any other: linear interpolation, which the
     // ghost's mirror makes the wall's velocity (see convection.hpp).
     const auto value = [&](bool at_wall, double flux, double qm, double q0, double q1, double qp, double w1) {
@@ -34,6 +34,8 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
     const int nx = grid.nx(), ny = grid.ny();
     const Field2D& u = vel.u;
     const Field2D& v = vel.v;
+    const Field2D& tu = transport ? transport->u : vel.u;  // transporting velocities (convection.hpp)
+    const Field2D& tv = transport ? transport->v : vel.v;
 
     // u momentum
     for (int j = 0; j < ny; ++j) {
@@ -45,16 +47,16 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
         for (int i = u_first; i < nx; ++i) {
             // east/west faces are cell centres i and i-1: U = mean of the two faces, value at the midpoint.
             const double wxe = wx_centre(i), wxw = wx_centre(i - 1);
-            const double Ue = 0.5 * (u(i, j) + u(i + 1, j)) - wxe;
-            const double Uw = 0.5 * (u(i - 1, j) + u(i, j)) - wxw;
+            const double Ue = 0.5 * (tu(i, j) + tu(i + 1, j)) - wxe;
+            const double Uw = 0.5 * (tu(i - 1, j) + tu(i, j)) - wxw;
             const double fe =
                 Ue * value(wall_u(i, j, i + 1, j), Ue, u(i - 1, j), u(i, j), u(i + 1, j), u(i + 2, j), 0.5);
             const double fw =
                 Uw * value(wall_u(i - 1, j, i, j), Uw, u(i - 2, j), u(i - 1, j), u(i, j), u(i + 1, j), 0.5);
             // north/south faces: the volume flux through [xc(i-1), xc(i)] splits into the two cells' v faces.
             const double a0 = (X.f(i) - X.c(i - 1)) / X.dc(i), a1 = 1.0 - a0;
-            const double Vn = a0 * v(i - 1, j + 1) + a1 * v(i, j + 1) - wyn;
-            const double Vs = a0 * v(i - 1, j) + a1 * v(i, j) - wys;
+            const double Vn = a0 * tv(i - 1, j + 1) + a1 * tv(i, j + 1) - wyn;
+            const double Vs = a0 * tv(i - 1, j) + a1 * tv(i, j) - wys;
             const double fn =
                 Vn * value(wall_u(i, j, i, j + 1), Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
             const double fs =
@@ -67,15 +69,15 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
         const double b0 = (Y.f(j) - Y.c(j - 1)) / Y.dc(j), b1 = 1.0 - b0;
         const double wyn = wy_centre(j), wys = wy_centre(j - 1);
         for (int i = 0; i < nx; ++i) {
-            const double Vn = 0.5 * (v(i, j) + v(i, j + 1)) - wyn;
-            const double Vs = 0.5 * (v(i, j - 1) + v(i, j)) - wys;
+            const double Vn = 0.5 * (tv(i, j) + tv(i, j + 1)) - wyn;
+            const double Vs = 0.5 * (tv(i, j - 1) + tv(i, j)) - wys;
             const double fn =
                 Vn * value(wall_v(i, j, i, j + 1), Vn, v(i, j - 1), v(i, j), v(i, j + 1), v(i, j + 2), 0.5);
             const double fs =
                 Vs * value(wall_v(i, j - 1, i, j), Vs, v(i, j - 2), v(i, j - 1), v(i, j), v(i, j + 1), 0.5);
             const double wxe = wx_line(i + 1), wxw = wx_line(i);
-            const double Ue = b0 * u(i + 1, j - 1) + b1 * u(i + 1, j) - wxe;
-            const double Uw = b0 * u(i, j - 1) + b1 * u(i, j) - wxw;
+            const double Ue = b0 * tu(i + 1, j - 1) + b1 * tu(i + 1, j) - wxe;
+            const double Uw = b0 * tu(i, j - 1) + b1 * tu(i, j) - wxw;
             const double we = (X.f(i + 1) - X.c(i)) / X.dc(i + 1);
             const double ww = (X.f(i) - X.c(i - 1)) / X.dc(i);
             const double fe =
@@ -90,13 +92,13 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
 }  // namespace
 
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                const LineVelocities* lines, const Velocity* wall_faces) {
+                const LineVelocities* lines, const Velocity* wall_faces, const Velocity* transport) {
     const bool moving = lines && !lines->zero();
     const auto run = [&]<ConvectionScheme S>() {
         if (moving)
-            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines, wall_faces);
+            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines, wall_faces, transport);
         else
-            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr, wall_faces);
+            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr, wall_faces, transport);
     };
     switch (scheme) {
         case ConvectionScheme::central:

@@ -34,7 +34,14 @@ namespace chute {
 // grid is refined; it held about half of the 5 % by which the study's block moving through still water had less
 // drag than held in a stream (docs/validation.md, "Sharp interface", fourth step). On a held wall the
 // transporting velocity there is about 0, so the choice changes nothing (2e-5 of the held block's drag).
+// `transport` (null: `vel`): the velocities that transport the momentum across the control volumes' sides (each side's
+// the mean of the two faces beside it), `vel` staying the transported one. With a sharp surface's cut faces
+// (FlowSolver::PressureBoundary::cut_transport) they are the faces' volume fluxes per unit area, alpha u + (1 - alpha)
+// U_b: a side the surface shuts carries the body's flux, not the mirrored velocity of the ghost faces beside it, and
+// each control volume's continuity is that of its two cells, which the projection met (the cut cells' staggered
+// momentum of Cheny & Botella 2010, JCP 229:1043, LS-STAG).
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                const LineVelocities* lines = nullptr, const Velocity* wall_faces = nullptr);
+                const LineVelocities* lines = nullptr, const Velocity* wall_faces = nullptr,
+                const Velocity* transport = nullptr);
 
 }  // namespace chute

@@ -60,6 +60,10 @@ chute_validation(sharp_square_symmetric FixedBodies.SharpSquareOnALineFeelsNoFor
 # the force of a sharp body jumps as its surface crosses the place where the faces' classification switches (ghost
 # faces: -10 % / +15 % either side of a tangential face's centre; forcing faces: -5 % / +11 % either side of a line).
 chute_validation(sharp_force_continuity FixedBodies.SharpForceContinuousAsTheSurfaceCrossesFaces 2 "validation;slow;known_failure")
+# Cut momentum (numerics.ibm.cut_momentum): the same bed continuous, and a face-on square's drag independent of its place.
+chute_validation(sharp_cut_momentum_couette FixedBodies.SharpCutMomentumHoldsCouetteFlowExactly 2 "validation")
+chute_validation(sharp_cut_momentum_continuity FixedBodies.SharpCutMomentumForceContinuousAsTheSurfaceCrossesFaces 2 "validation")
+chute_validation(sharp_cut_momentum_face_on FixedBodies.SharpCutMomentumFaceOnSquareIndependentOfItsPlace 2 "validation")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
 chute_validation(added_mass_square_body_fitted MovingBodies.AddedMassOfSquareBodyFitted 2 "validation")
