@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "case_file.hpp"
 #include "falling_square.hpp"
@@ -173,4 +174,39 @@ TEST(SharpCoupling, PrescribedBodyReadsTheFreeBodysAddedMass) {
                     lowest, highest);
     EXPECT_GT(lowest, 1.335 * 0.97);
     EXPECT_LT(highest, 1.335 * 1.12);
+}
+
+// Cut momentum (numerics.ibm.cut_momentum) where it is not built yet stops with a message naming the key: with a
+// turbulence model (its wall terms are the laminar stress) and with more than one body (a face beside two surfaces
+// would take both bodies' wall terms); and the schema refuses it without ghost faces.
+TEST(SharpCoupling, CutMomentumOutsideWhatItDoesIsRefusedNamingTheKey) {
+    const std::string base = R"(
+domain:
+  x: {start: 0.0, end: 1.0, cells: 20}
+  y: {start: 0.0, end: 1.0, cells: 20}
+fluid: {density: 1000.0, viscosity: 1.0e-3}
+boundaries:
+  left: {type: inflow, velocity: [1.0, 0.0]}
+  right: {type: outflow}
+  bottom: {type: slip}
+  top: {type: slip}
+bodies:
+  block: {shape: rectangle, centre: [0.4, 0.5], size: [0.2, 0.2]}
+numerics: {ibm: {interface: sharp, sharp_faces: ghost, cut_momentum: true}}
+time: {end: 1.0}
+)";
+    auto message = [](const std::string& text, const std::vector<std::string>& overrides) {
+        try {
+            Model model(parse_case_text(text, overrides), MPI_COMM_WORLD);
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message(base, {}), "");
+    EXPECT_NE(message(base, {"turbulence.model=k_epsilon"}).find("numerics.ibm.cut_momentum"), std::string::npos);
+    std::string second = base;
+    second.replace(second.find("numerics:"), 0, "  stone: {shape: circle, centre: [0.75, 0.5], diameter: 0.1}\n");
+    EXPECT_NE(message(second, {}).find("numerics.ibm.cut_momentum: one body"), std::string::npos);
+    EXPECT_NE(message(base, {"numerics.ibm.sharp_faces=forcing"}).find("cut_momentum"), std::string::npos);
 }
