@@ -65,10 +65,6 @@ SharpForcing::SharpForcing(const Grid& grid, const IbmConfig& config, const std:
 void SharpForcing::classify_component(bool is_u, Component& out) const {
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
-    const int nx = grid_.nx(), ny = grid_.ny();
-    // Faces on a non-periodic domain boundary are the boundary conditions' (euler_lagrange.cpp, axis_points).
-    const int first_i = is_u && !grid_.x_axis().periodic() && X.offset == 0 ? 1 : 0;
-    const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
     auto position = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
     auto volume = [&](int i, int j) { return is_u ? X.dc(i) * Y.w(j) : X.w(i) * Y.dc(j); };
 
@@ -77,18 +73,8 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const Body& body = bodies_[b];
         const Outline& outline = body.outline();
-        const double h = cell_size_[b];
         const double surface = on_surface(b);
-        int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
-        if (outline.closed()) {
-            // Owned faces within the body's reach and two cells.
-            const Vec2 c = body.state().centre;
-            const double reach = outline.reach() + 2.0 * h;
-            while (i0 <= i1 && position(i0, 0).x() < c.x() - reach - X.w(i0)) ++i0;
-            while (i1 >= i0 && position(i1, 0).x() > c.x() + reach + X.w(i1)) --i1;
-            while (j0 <= j1 && position(0, j0).y() < c.y() - reach - Y.w(j0)) ++j0;
-            while (j1 >= j0 && position(0, j1).y() > c.y() + reach + Y.w(j1)) --j1;
-        }
+        const auto [i0, i1, j0, j1] = faces_in_reach(b, is_u);
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
                 const Vec2 p = position(i, j);
@@ -201,6 +187,25 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
             if (q.i == out.forcing[k].i && q.j == out.forcing[k].j) out.self[k] += q.weight;
 }
 
+SharpForcing::FaceRange SharpForcing::faces_in_reach(std::size_t b, bool is_u) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    // Faces on a non-periodic domain boundary are the boundary conditions' (euler_lagrange.cpp, axis_points).
+    const int first_i = is_u && !grid_.x_axis().periodic() && X.offset == 0 ? 1 : 0;
+    const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
+    auto position = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
+    FaceRange r{first_i, grid_.nx() - 1, first_j, grid_.ny() - 1};
+    const Body& body = bodies_[b];
+    if (!body.outline().closed()) return r;
+    const Vec2 c = body.state().centre;
+    const double reach = body.outline().reach() + 2.0 * cell_size_[b];
+    while (r.i0 <= r.i1 && position(r.i0, 0).x() < c.x() - reach - X.w(r.i0)) ++r.i0;
+    while (r.i1 >= r.i0 && position(r.i1, 0).x() > c.x() + reach + X.w(r.i1)) --r.i1;
+    while (r.j0 <= r.j1 && position(0, r.j0).y() < c.y() - reach - Y.w(r.j0)) ++r.j0;
+    while (r.j1 >= r.j0 && position(0, r.j1).y() > c.y() + reach + Y.w(r.j1)) --r.j1;
+    return r;
+}
+
 SharpForcing::FaceCut SharpForcing::face_cut(std::size_t b, bool is_u, int i, int j) const {
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
@@ -220,23 +225,12 @@ void SharpForcing::find_wall_stencils() {
     wall_stencils_.clear();
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
-    const int nx = grid_.nx(), ny = grid_.ny();
     for (const bool is_u : {true, false}) {
-        const int first_i = is_u && !grid_.x_axis().periodic() && X.offset == 0 ? 1 : 0;
-        const int first_j = !is_u && !grid_.y_axis().periodic() && Y.offset == 0 ? 1 : 0;
         auto centre = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
         const int along = is_u ? 1 : 0;  // the axis of the face's segment: a cut moves its point along it
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const Body& body = bodies_[b];
-            int i0 = first_i, i1 = nx - 1, j0 = first_j, j1 = ny - 1;
-            if (body.outline().closed()) {
-                const Vec2 c = body.state().centre;
-                const double reach = body.outline().reach() + 2.0 * cell_size_[b];
-                while (i0 <= i1 && centre(i0, 0).x() < c.x() - reach - X.w(i0)) ++i0;
-                while (i1 >= i0 && centre(i1, 0).x() > c.x() + reach + X.w(i1)) --i1;
-                while (j0 <= j1 && centre(0, j0).y() < c.y() - reach - Y.w(j0)) ++j0;
-                while (j1 >= j0 && centre(0, j1).y() > c.y() + reach + Y.w(j1)) --j1;
-            }
+            const auto [i0, i1, j0, j1] = faces_in_reach(b, is_u);
             for (int j = j0; j <= j1; ++j)
                 for (int i = i0; i <= i1; ++i) {
                     const FaceCut F = face_cut(b, is_u, i, j);

@@ -194,6 +194,11 @@ private:
         Vec2 point;
     };
     FaceCut face_cut(std::size_t b, bool is_u, int i, int j) const;
+    // The owned faces of one component within body b's reach and two cells (every owned face for a plane).
+    struct FaceRange {
+        int i0, i1, j0, j1;
+    };
+    FaceRange faces_in_reach(std::size_t b, bool is_u) const;
     // The viscous stencil of a face with an open part beside the surface, per direction (x, y): the distances to its
     // neighbours' points or to the surface (minus, plus), whether that side is the wall, and the wall's point.
     struct WallStencil {
