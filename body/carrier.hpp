@@ -96,6 +96,10 @@ public:
     // The flow the bodies are carried through, handed once after both are built (after the solver took the
     // solid cells): a carrier that reads the solver's fluxes, or moves its grid with a body, keeps it.
     virtual void attach(FlowSolver&) {}
+    // The turbulence model's k and wall law, handed once after the model is built (laminar runs: never): a carrier
+    // whose momentum equations put the wall law at the surface (the sharp immersed boundary's cut momentum) keeps it.
+    // k must outlive the carrier.
+    virtual void attach_turbulence(const WallTurbulence&) {}
     // What a carrier needs in a checkpoint to continue bit for bit (small arrays, by name), and after a checkpoint
     // restored the grid's lines, the flow and the bodies' states (run/restart_state.cpp), before place(): those
     // arrays back, and a carrier whose cells follow the lines (a body-fitted grid with modifier layers) finds them.

@@ -55,6 +55,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
     : grid_(grid),
       settings_(settings),
       bodies_(bodies),
+      diffused_(grid),
       walls_(grid, bodies, settings.image_distance,
              settings.ibm.interface == Interface::sharp && settings.ibm.sharp_faces == IbmConfig::SharpFaces::ghost
                  ? NearWall::surface
@@ -65,10 +66,6 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       wrench_(bodies.size()),
       coupling_(bodies.size()),
       kept_response_(bodies.size()) {
-    if (settings.ibm.cut_momentum && settings.ibm.interface == Interface::sharp && settings.wall_profile)
-        throw std::invalid_argument(
-            "numerics.ibm.cut_momentum: not yet with a turbulence model (its wall terms are the laminar viscous "
-            "stress; turbulence.model: laminar, or leave cut_momentum false)");
     // Each body's wall stencils are found on their own: a face beside two surfaces would take both.
     if (settings.ibm.cut_momentum && settings.ibm.interface == Interface::sharp && bodies_.size() > 1)
         throw std::invalid_argument("numerics.ibm.cut_momentum: one body so far (the case has " +
@@ -116,9 +113,16 @@ void ImmersedBoundary::attach(FlowSolver& flow) {
 
 void ImmersedBoundary::impose(Velocity& predicted, double dt) {
     if (bodies_.empty()) return;
-    if (sharp_ && flow_)
-        sharp_->set_eddy_viscosity(flow_->turbulent() ? &std::as_const(*flow_).eddy_viscosity().cell : nullptr);
-    if (sharp_ && flow_) sharp_->set_start_velocity(&std::as_const(*flow_).velocity());
+    if (sharp_ && flow_) {
+        // The viscous operator the flow solver applied to u* (cut momentum replaces it beside the surface): with
+        // implicit diffusion to u* itself, as the solve left it; explicit, to u^n.
+        const bool implicit = flow_->implicit_diffusion();
+        if (sharp_->cut_momentum() && implicit) diffused_ = predicted;
+        sharp_->set_viscous_operator({flow_->turbulent() ? &std::as_const(*flow_).eddy_viscosity() : nullptr,
+                                      flow_->turbulent() || implicit,
+                                      implicit ? &diffused_ : &std::as_const(*flow_).velocity()});
+        sharp_->set_wall_turbulence(wall_turbulence_ ? &*wall_turbulence_ : nullptr);
+    }
     forcing_->apply(predicted, dt);
     // Ghost faces: the pressure problem follows the surfaces where they are now, through the open fraction of each
     // face (ibm/cut_faces.hpp). With a moving body its matrix and multigrid hierarchy are rebuilt every step: PCG then

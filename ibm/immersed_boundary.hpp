@@ -81,6 +81,7 @@ public:
     void restored(const NamedArrays& arrays) override;
 
     void attach(FlowSolver& flow) override;
+    void attach_turbulence(const WallTurbulence& turbulence) override { wall_turbulence_.emplace(turbulence); }
 
     const ImmersedForcing& forcing() const { return *forcing_; }
     // Ghost faces: the responses of the exact coupling solved so far (the others kept from an earlier step), for tests
@@ -95,6 +96,8 @@ private:
     std::unique_ptr<ImmersedForcing> forcing_;
     SharpForcing* sharp_ = nullptr;  // forcing_ when the interface is sharp
     FlowSolver* flow_ = nullptr;
+    std::optional<WallTurbulence> wall_turbulence_;  // attach_turbulence(); laminar: none
+    Velocity diffused_;  // cut momentum with implicit diffusion: u* as the implicit solve left it
     std::vector<std::unique_ptr<SurfaceStress>> stress_;
     ImmersedWall walls_;
     std::unique_ptr<CutFaces> cut_;  // with ghost faces: the faces the surfaces cut, for the pressure problem

@@ -272,28 +272,66 @@ void SharpForcing::find_wall_stencils() {
     }
 }
 
+double SharpForcing::face_k(const WallStencil& w) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    const Field2D& k = wall_turbulence_->k;
+    // The face's two cells (across it), then those beside them along its segment.
+    const int di = w.is_u ? 1 : 0, dj = w.is_u ? 0 : 1;
+    for (const int reach : {0, 1}) {
+        double sum = 0.0, n = 0.0;
+        for (const int along : {-reach, reach}) {
+            const int ai = w.i + (w.is_u ? 0 : along), aj = w.j + (w.is_u ? along : 0);
+            for (const auto& [ci, cj] : {std::pair{ai - di, aj - dj}, std::pair{ai, aj}})
+                if (!inside_any(Vec2(X.c(ci), Y.c(cj)))) sum += k(ci, cj), n += 1.0;
+            if (reach == 0) break;
+        }
+        if (n > 0.0) return sum / n;
+    }
+    return 0.0;
+}
+
+double SharpForcing::stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall) const {
+    if (!viscous_.stress_form) return viscosity_;
+    const bool normal = (d == 0) == w.is_u;  // the flux along the component's own axis: a normal stress
+    if (at_wall && !normal && wall_turbulence_) {
+        const double y = w.distance[d][side];
+        return viscosity_ + wall_turbulence_->wall_viscosity(face_k(w), y);
+    }
+    const EddyViscosity* eddy = viscous_.eddy;
+    if (normal) {
+        // The cell between the face and its neighbour on that side (viscous_stress.cpp).
+        const int ci = w.is_u ? w.i - 1 + side : w.i, cj = w.is_u ? w.j : w.j - 1 + side;
+        return 2.0 * (viscosity_ + (eddy ? eddy->cell(ci, cj) : 0.0));
+    }
+    const int ki = w.is_u ? w.i : w.i + side, kj = w.is_u ? w.j + side : w.j;
+    return viscosity_ + (eddy ? eddy->corner(ki, kj) : 0.0);
+}
+
 void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
                                        const std::function<void(const WallStencil&, double)>& account) {
-    if (!start_) throw std::logic_error("SharpForcing: cut momentum needs the step's starting velocity");
+    if (!viscous_.applied_to) throw std::logic_error("SharpForcing: cut momentum needs the step's viscous operator");
     std::vector<double> values(wall_stencils_.size());
     for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
         const WallStencil& w = wall_stencils_[k];
-        const Field2D& start = w.is_u ? start_->u : start_->v;
+        const Field2D& start = w.is_u ? viscous_.applied_to->u : viscous_.applied_to->v;
         const double u0 = start(w.i, w.j);
         double sum = (w.is_u ? star.u : star.v)(w.i, w.j), diagonal = 1.0;
         for (int d = 0; d < 2; ++d) {
             if (!w.active[d]) continue;
             const double u_minus = start(d == 0 ? w.i - 1 : w.i, d == 0 ? w.j : w.j - 1);
             const double u_plus = start(d == 0 ? w.i + 1 : w.i, d == 0 ? w.j : w.j + 1);
-            sum -= dt * viscosity_ * ((u_plus - u0) / w.uniform[d][1] - (u0 - u_minus) / w.uniform[d][0]) /
-                   w.uniform_width[d];
+            const double uniform_plus = stencil_coefficient(w, d, 1, false) * (u_plus - u0) / w.uniform[d][1];
+            const double uniform_minus = stencil_coefficient(w, d, 0, false) * (u0 - u_minus) / w.uniform[d][0];
+            sum -= dt * (uniform_plus - uniform_minus) / w.uniform_width[d];
             for (int side = 0; side < 2; ++side) {
                 double neighbour = side == 0 ? u_minus : u_plus;
                 if (w.wall[d][side]) {
                     const Vec2 U = bodies_[w.body].velocity_at(w.wall_point[d][side]);
                     neighbour = w.is_u ? U.x() : U.y();
                 }
-                const double rate = dt * viscosity_ / (w.width[d] * w.distance[d][side]);
+                const double rate =
+                    dt * stencil_coefficient(w, d, side, w.wall[d][side]) / (w.width[d] * w.distance[d][side]);
                 sum += rate * neighbour;
                 diagonal += rate;
             }
@@ -514,8 +552,9 @@ void SharpForcing::carry_open_flux(const Component& c, bool is_u, const std::vec
             continue;
         }
         // nu + nu_t at the face: the mean of its two cells' eddy viscosity (k-epsilon).
+        const Field2D* eddy = viscous_.eddy ? &viscous_.eddy->cell : nullptr;
         const double nu_t =
-            eddy_ ? 0.5 * ((*eddy_)(f.i, f.j) + (is_u ? (*eddy_)(f.i - 1, f.j) : (*eddy_)(f.i, f.j - 1))) : 0.0;
+            eddy ? 0.5 * ((*eddy)(f.i, f.j) + (is_u ? (*eddy)(f.i - 1, f.j) : (*eddy)(f.i, f.j - 1))) : 0.0;
         const double rate = (viscosity_ + nu_t) * (2.0 / (h.x() * h.x()) + 2.0 / (h.y() * h.y())) +
                             std::abs(U.x()) / h.x() + std::abs(U.y()) / h.y();
         carried[k] = (offset(f.i, f.j) + rate * dt * to_profile) / (1.0 + rate * dt);

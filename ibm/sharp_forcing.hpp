@@ -42,7 +42,7 @@
 // the next face free, as beside a body-fitted wall): either way the same on every side of a body, whatever the
 // round-off of its distance (decided by that round-off before, a square held in a stream along its diagonal, its
 // sides on grid lines, read a lateral force of 5 % of its drag on a grid symmetric about the diagonal).
-// Cut momentum (numerics.ibm.cut_momentum, ghost faces; laminar): a face is classified by its open fraction alpha (the
+// Cut momentum (numerics.ibm.cut_momentum, ghost faces): a face is classified by its open fraction alpha (the
 // part of its segment outside the body, as CutFaces measures it) instead of its centre. Every face with alpha > 0
 // keeps its own momentum equation, its value the flow's across its open part, which the continuity equation and the
 // projection already take it for (A alpha u); a ghost is a face the surface shuts whole (alpha = 0) that has such a
@@ -53,13 +53,19 @@
 // whole) to each neighbour along x and y, the distance to the neighbour's point, or to the surface and the body's
 // velocity there where the neighbour is shut,
 //   nu [ (u_+ - u) / d_+ - (u - u_-) / d_- ] / ((d_+ + d_-) / 2)      per direction,
-// in place of the uniform stencil the flow solver applied (taken out with the step's starting velocity), the wall
-// parts implicit (a face a sliver of a cell from the surface is held to its velocity, not made unstable by it). A
+// in place of the uniform stencil the flow solver applied (taken out with the velocity it was applied to: u^n, or u*
+// with implicit diffusion), the wall parts implicit (a face a sliver of a cell from the surface is held to its
+// velocity, not made unstable by it). Each part takes the flow solver's coefficient (nu, or with the stress form
+// 2 (nu + nu_t) on a normal stress and nu + nu_t on a shear); a wall part across which the flux is a shear takes,
+// with a turbulence model, nu + nu_w(k, d), the wall law's eddy viscosity at the wall's distance d along the line
+// (turbulence/wall_function.hpp, k the face's cells'), so that the wall shear is the law's from a sliver to a cell. A
 // cut face's value tends to the body's as its open part closes, and its neighbour's stencil to the wall's: nothing
-// jumps as a face opens or closes. The convection is transported by the cut fluxes
-// (FlowSolver::PressureBoundary::cut_transport): without that a cut face whose centre is inside received the mirrored
-// normal velocity of the ghosts across its shut side. The momentum the wall terms give the fluid is the forcing's
-// (measure (a)).
+// jumps as a face opens or closes. The convection is transported by the cut fluxes, and the faces shut whole carry the
+// body's velocity in it, not their mirror (FlowSolver::PressureBoundary::cut_transport): without the first a cut face
+// whose centre is inside received the mirrored normal velocity of the ghosts across its shut side; without the
+// second a face a sliver from the surface (held to U_b) and the same face shut (a mirror) differed in what the
+// convection read, and a k-epsilon block held in a stream lost 5 % of its drag as its front and back neared a grid
+// line. The momentum the wall terms give the fluid is the forcing's (measure (a)).
 // A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
 // The pressure: with forcing faces it is solved on the whole grid (the fast solvers stay); the projection then moves
 // the forced faces by dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U
@@ -78,10 +84,12 @@
 #include <vector>
 
 #include "body.hpp"
+#include "carrier.hpp"  // WallTurbulence
 #include "euler_lagrange.hpp"
 #include "grid_placement.hpp"
 #include "ibm_config.hpp"
 #include "immersed_forcing.hpp"
+#include "viscous_stress.hpp"  // EddyViscosity
 
 namespace chute {
 
@@ -143,12 +151,19 @@ public:
     //     corner slides past, starts from the profile's (their own prediction put the moving block's drag 2 % low).
     // 0 on every other face. Set by apply().
     const Velocity& open_flux() const { return open_flux_; }
-    // The eddy viscosity at the cell centres (ghosts filled) that the faces' own viscous term adds to the fluid's;
-    // null: none. The field must outlive the forcing.
-    void set_eddy_viscosity(const Field2D* cell_nu_t) { eddy_ = cell_nu_t; }
-    // The velocity at the start of the step, u^n (cut momentum: the uniform viscous stencil the wall terms replace).
-    // Must outlive the forcing.
-    void set_start_velocity(const Velocity* start) { start_ = start; }
+    // The flow solver's viscous operator in this step (set before apply()): its eddy viscosity (null: none; the cut
+    // ghost faces' own viscous term adds it), whether it is the stress divergence with 2 (nu + nu_t) on the normal
+    // stresses (core/operators/viscous_stress.hpp: with an eddy viscosity or implicit diffusion) or nu laplacian(u)
+    // (diffusion.hpp), and the velocity it was applied to (u^n with explicit diffusion, u* as the implicit solve left
+    // it): cut momentum takes it out where the wall stencils replace it. What it points to must outlive the step.
+    struct ViscousOperator {
+        const EddyViscosity* eddy = nullptr;
+        bool stress_form = false;
+        const Velocity* applied_to = nullptr;
+    };
+    void set_viscous_operator(const ViscousOperator& op) { viscous_ = op; }
+    // The turbulence model's k and wall law (null: laminar): cut momentum's wall shear is the law's (below).
+    void set_wall_turbulence(const WallTurbulence* turbulence) { wall_turbulence_ = turbulence; }
     bool cut_momentum() const { return cut_momentum_; }
     // Ghost faces: 1 on the faces strictly inside a body whose values the forcing sets (the ghost faces' mirror, the
     // body's velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are
@@ -211,6 +226,12 @@ private:
         Vec2 wall_point[2][2] = {{Vec2(0, 0), Vec2(0, 0)}, {Vec2(0, 0), Vec2(0, 0)}};
     };
     void find_wall_stencils();
+    // The coefficient K of a wall stencil's flux K (u_side - u) / distance on one side: the flow solver's (nu, or with
+    // the stress form 2 (nu + nu_t) of the cell between on a normal stress, nu + nu_t of the corner on a shear); on a
+    // wall side across which the flux is a shear, with a turbulence model, nu + nu_w, the wall law's eddy viscosity
+    // at the wall's distance along the line for the face's k.
+    double stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall) const;
+    double face_k(const WallStencil& w) const;  // k at a face: its fluid cells' mean (their neighbours' if none)
     // The wall terms on the predicted velocity (backward Euler in the face's own value); `account` receives each
     // face's change.
     void apply_wall_stencils(Velocity& star, double dt, const std::function<void(const WallStencil&, double)>& account);
@@ -244,10 +265,10 @@ private:
     double image_cells_;
     SharpProfile profile_;
     double viscosity_;
-    const Field2D* eddy_ = nullptr;    // set_eddy_viscosity()
-    bool ghost_;                       // numerics.ibm.sharp_faces: ghost
-    bool cut_momentum_;                // numerics.ibm.cut_momentum
-    const Velocity* start_ = nullptr;  // set_start_velocity()
+    ViscousOperator viscous_;                          // set_viscous_operator()
+    const WallTurbulence* wall_turbulence_ = nullptr;  // set_wall_turbulence()
+    bool ghost_;                                       // numerics.ibm.sharp_faces: ghost
+    bool cut_momentum_;                                // numerics.ibm.cut_momentum
     std::vector<WallStencil> wall_stencils_;
     WallProfile wall_profile_;
     std::vector<double> cell_size_;

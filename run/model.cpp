@@ -48,8 +48,10 @@ Model::Model(const CaseConfig& config, MPI_Comm comm, const std::string& carrier
       frame_(FollowingFrame::of(config_)) {
     if (const SolidCells* solid = carrier_->solid_cells()) flow_->set_solid_cells(solid);
     carrier_->attach(*flow_);
-    if (config_.turbulence.model == TurbulenceModelType::k_epsilon)
+    if (config_.turbulence.model == TurbulenceModelType::k_epsilon) {
         turbulence_ = std::make_unique<KEpsilon>(k_epsilon_settings(config_), *flow_, *carrier_);
+        carrier_->attach_turbulence(turbulence_->at_walls());
+    }
     // A translating grid moves with the body from the first step's limit on (run/following_frame.hpp).
     window_after_step();
 }

@@ -13,7 +13,7 @@ namespace {
 // cells stretch, the change of their volume is the flow solver's, core/operators/line_motion.hpp).
 template <ConvectionScheme S, bool Moving>
 void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                     const LineVelocities* lv, const Velocity* wall, const Velocity* transport) {
+                     const LineVelocities* lv, const Velocity* wall, const Velocity* transport, const Velocity* far) {
     // A face value between a face a sharp surface sets (wall) and any other: linear interpolation, which the
     // ghost's mirror makes the wall's velocity (see convection.hpp).
     const auto value = [&](bool at_wall, double flux, double qm, double q0, double q1, double qp, double w1) {
@@ -36,6 +36,8 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
     const Field2D& v = vel.v;
     const Field2D& tu = transport ? transport->u : vel.u;  // transporting velocities (convection.hpp)
     const Field2D& tv = transport ? transport->v : vel.v;
+    const Field2D& fu = far ? far->u : vel.u;  // the values two faces away (the limiter's ratio)
+    const Field2D& fv = far ? far->v : vel.v;
 
     // u momentum
     for (int j = 0; j < ny; ++j) {
@@ -50,17 +52,17 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
             const double Ue = 0.5 * (tu(i, j) + tu(i + 1, j)) - wxe;
             const double Uw = 0.5 * (tu(i - 1, j) + tu(i, j)) - wxw;
             const double fe =
-                Ue * value(wall_u(i, j, i + 1, j), Ue, u(i - 1, j), u(i, j), u(i + 1, j), u(i + 2, j), 0.5);
+                Ue * value(wall_u(i, j, i + 1, j), Ue, fu(i - 1, j), u(i, j), u(i + 1, j), fu(i + 2, j), 0.5);
             const double fw =
-                Uw * value(wall_u(i - 1, j, i, j), Uw, u(i - 2, j), u(i - 1, j), u(i, j), u(i + 1, j), 0.5);
+                Uw * value(wall_u(i - 1, j, i, j), Uw, fu(i - 2, j), u(i - 1, j), u(i, j), fu(i + 1, j), 0.5);
             // north/south faces: the volume flux through [xc(i-1), xc(i)] splits into the two cells' v faces.
             const double a0 = (X.f(i) - X.c(i - 1)) / X.dc(i), a1 = 1.0 - a0;
             const double Vn = a0 * tv(i - 1, j + 1) + a1 * tv(i, j + 1) - wyn;
             const double Vs = a0 * tv(i - 1, j) + a1 * tv(i, j) - wys;
             const double fn =
-                Vn * value(wall_u(i, j, i, j + 1), Vn, u(i, j - 1), u(i, j), u(i, j + 1), u(i, j + 2), wn);
+                Vn * value(wall_u(i, j, i, j + 1), Vn, fu(i, j - 1), u(i, j), u(i, j + 1), fu(i, j + 2), wn);
             const double fs =
-                Vs * value(wall_u(i, j - 1, i, j), Vs, u(i, j - 2), u(i, j - 1), u(i, j), u(i, j + 1), ws);
+                Vs * value(wall_u(i, j - 1, i, j), Vs, fu(i, j - 2), u(i, j - 1), u(i, j), fu(i, j + 1), ws);
             out.u(i, j) = -((fe - fw) / X.dc(i) + (fn - fs) / hy);
         }
     }
@@ -72,18 +74,18 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
             const double Vn = 0.5 * (tv(i, j) + tv(i, j + 1)) - wyn;
             const double Vs = 0.5 * (tv(i, j - 1) + tv(i, j)) - wys;
             const double fn =
-                Vn * value(wall_v(i, j, i, j + 1), Vn, v(i, j - 1), v(i, j), v(i, j + 1), v(i, j + 2), 0.5);
+                Vn * value(wall_v(i, j, i, j + 1), Vn, fv(i, j - 1), v(i, j), v(i, j + 1), fv(i, j + 2), 0.5);
             const double fs =
-                Vs * value(wall_v(i, j - 1, i, j), Vs, v(i, j - 2), v(i, j - 1), v(i, j), v(i, j + 1), 0.5);
+                Vs * value(wall_v(i, j - 1, i, j), Vs, fv(i, j - 2), v(i, j - 1), v(i, j), fv(i, j + 1), 0.5);
             const double wxe = wx_line(i + 1), wxw = wx_line(i);
             const double Ue = b0 * tu(i + 1, j - 1) + b1 * tu(i + 1, j) - wxe;
             const double Uw = b0 * tu(i, j - 1) + b1 * tu(i, j) - wxw;
             const double we = (X.f(i + 1) - X.c(i)) / X.dc(i + 1);
             const double ww = (X.f(i) - X.c(i - 1)) / X.dc(i);
             const double fe =
-                Ue * value(wall_v(i, j, i + 1, j), Ue, v(i - 1, j), v(i, j), v(i + 1, j), v(i + 2, j), we);
+                Ue * value(wall_v(i, j, i + 1, j), Ue, fv(i - 1, j), v(i, j), v(i + 1, j), fv(i + 2, j), we);
             const double fw =
-                Uw * value(wall_v(i - 1, j, i, j), Uw, v(i - 2, j), v(i - 1, j), v(i, j), v(i + 1, j), ww);
+                Uw * value(wall_v(i - 1, j, i, j), Uw, fv(i - 2, j), v(i - 1, j), v(i, j), fv(i + 1, j), ww);
             out.v(i, j) = -((fe - fw) / X.w(i) + (fn - fs) / Y.dc(j));
         }
     }
@@ -92,13 +94,14 @@ void convection_impl(const Grid& grid, const Velocity& vel, int u_first, int v_f
 }  // namespace
 
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
-                const LineVelocities* lines, const Velocity* wall_faces, const Velocity* transport) {
+                const LineVelocities* lines, const Velocity* wall_faces, const Velocity* transport,
+                const Velocity* far) {
     const bool moving = lines && !lines->zero();
     const auto run = [&]<ConvectionScheme S>() {
         if (moving)
-            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines, wall_faces, transport);
+            convection_impl<S, true>(grid, vel, u_first, v_first, out, lines, wall_faces, transport, far);
         else
-            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr, wall_faces, transport);
+            convection_impl<S, false>(grid, vel, u_first, v_first, out, nullptr, wall_faces, transport, far);
     };
     switch (scheme) {
         case ConvectionScheme::central:

@@ -39,9 +39,12 @@ namespace chute {
 // (FlowSolver::PressureBoundary::cut_transport) they are the faces' volume fluxes per unit area, alpha u + (1 - alpha)
 // U_b: a side the surface shuts carries the body's flux, not the mirrored velocity of the ghost faces beside it, and
 // each control volume's continuity is that of its two cells, which the projection met (the cut cells' staggered
-// momentum of Cheny & Botella 2010, JCP 229:1043, LS-STAG).
+// momentum of Cheny & Botella 2010, JCP 229:1043, LS-STAG). The flow solver then hands the transported `vel` with
+// the body's velocity on the shut faces and no `wall_faces` (the scheme's own value everywhere).
+// `far` (null: `vel`): the values the limiter reads two faces upwind or downwind (its ratio r), there the ghost faces'
+// mirrors.
 void convection(const Grid& grid, ConvectionScheme scheme, const Velocity& vel, int u_first, int v_first, Velocity& out,
                 const LineVelocities* lines = nullptr, const Velocity* wall_faces = nullptr,
-                const Velocity* transport = nullptr);
+                const Velocity* transport = nullptr, const Velocity* far = nullptr);
 
 }  // namespace chute
