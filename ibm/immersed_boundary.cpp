@@ -66,10 +66,6 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
       wrench_(bodies.size()),
       coupling_(bodies.size()),
       kept_response_(bodies.size()) {
-    // Each body's wall stencils are found on their own: a face beside two surfaces would take both.
-    if (settings.ibm.cut_momentum && settings.ibm.interface == Interface::sharp && bodies_.size() > 1)
-        throw std::invalid_argument("numerics.ibm.cut_momentum: one body so far (the case has " +
-                                    std::to_string(bodies_.size()) + "; leave cut_momentum false)");
     if (walls_.near_wall() == NearWall::surface) cut_ = std::make_unique<CutFaces>(grid, bodies_);
     if (settings.ibm.interface == Interface::sharp) {
         auto sharp = std::make_unique<SharpForcing>(grid, settings.ibm, bodies_, settings.image_distance,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -104,9 +105,9 @@ void SharpForcing::classify_component(bool is_u, Component& out) const {
                 bool across = false;
                 if (cut_momentum_) {
                     // Inside here. A face with an open part is a fluid face; a shut one a ghost beside one.
-                    if (face_cut(b, is_u, i, j).alpha > 0.0) continue;
+                    if (face_cut_any(is_u, i, j).alpha > 0.0) continue;
                     for (const auto& [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
-                        across = across || face_cut(b, is_u, i + di, j + dj).alpha > 0.0;
+                        across = across || face_cut_any(is_u, i + di, j + dj).alpha > 0.0;
                 } else {
                     const Vec2 neighbours[4] = {position(i - 1, j), position(i + 1, j), position(i, j - 1),
                                                 position(i, j + 1)};
@@ -221,25 +222,54 @@ SharpForcing::FaceCut SharpForcing::face_cut(std::size_t b, bool is_u, int i, in
     return {alpha, outer + 0.5 * alpha * (inner - outer)};
 }
 
+SharpForcing::FaceCut SharpForcing::face_cut_any(bool is_u, int i, int j) const {
+    // As CutFaces counts a face: each end's distance to the nearest surface, the face cut by the body its inside end
+    // is in (the deeper end's when both are).
+    double ends[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    int owner[2] = {-1, -1};
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const auto [a, e] = end_distances(b, is_u, i, j);
+        if (a < ends[0]) ends[0] = a, owner[0] = static_cast<int>(b);
+        if (e < ends[1]) ends[1] = e, owner[1] = static_cast<int>(b);
+    }
+    if (ends[0] >= 0.0 && ends[1] >= 0.0) {  // open whole: its centre
+        const LocalAxis& X = grid_.lx();
+        const LocalAxis& Y = grid_.ly();
+        return {1.0, is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)), -1};
+    }
+    const int body = ends[0] <= ends[1] ? owner[0] : owner[1];
+    FaceCut cut = face_cut(static_cast<std::size_t>(body), is_u, i, j);
+    cut.body = body;
+    return cut;
+}
+
 void SharpForcing::find_wall_stencils() {
     wall_stencils_.clear();
     const LocalAxis& X = grid_.lx();
     const LocalAxis& Y = grid_.ly();
     for (const bool is_u : {true, false}) {
         auto centre = [&](int i, int j) { return is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j)); };
-        const int along = is_u ? 1 : 0;  // the axis of the face's segment: a cut moves its point along it
+        const int along = is_u ? 1 : 0;          // the axis of the face's segment: a cut moves its point along it
+        std::vector<char> seen(face_keys(), 0);  // a face in the reach of several bodies is done once
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const Body& body = bodies_[b];
             const auto [i0, i1, j0, j1] = faces_in_reach(b, is_u);
             for (int j = j0; j <= j1; ++j)
                 for (int i = i0; i <= i1; ++i) {
-                    const FaceCut F = face_cut(b, is_u, i, j);
+                    char& done = seen[face_key(i, j)];
+                    if (done) continue;
+                    // Beyond two face spacings from this body no stencil reaches it (a plane's reach is the grid).
+                    const double spacing = std::max(X.dc(i) + X.w(i), Y.dc(j) + Y.w(j));
+                    if (body.outline().signed_distance(body.to_body(centre(i, j))) > spacing) continue;
+                    done = 1;
+                    const FaceCut F = face_cut_any(is_u, i, j);
                     if (F.alpha <= 0.0) continue;
                     WallStencil w;
                     w.i = i;
                     w.j = j;
-                    w.body = static_cast<int>(b);
+                    w.body = F.body;
                     w.is_u = is_u;
+                    double nearest = std::numeric_limits<double>::infinity();  // the nearest wall part's distance
                     for (int d = 0; d < 2; ++d) {
                         const int step[2] = {d == 0 ? 1 : 0, d == 0 ? 0 : 1};
                         bool active = F.alpha < 1.0 && d == along;
@@ -248,17 +278,26 @@ void SharpForcing::find_wall_stencils() {
                             const int gi = i + sign * step[0], gj = j + sign * step[1];
                             const Vec2 offset = centre(gi, gj) - centre(i, j);
                             w.uniform[d][side] = std::abs(offset[d]);
-                            const FaceCut G = face_cut(b, is_u, gi, gj);
+                            const FaceCut G = face_cut_any(is_u, gi, gj);
                             if (G.alpha > 0.0) {
                                 w.distance[d][side] = std::abs((G.point - F.point)[d]);
                                 active = active || (G.alpha < 1.0 && d == along);
+                                if (w.body < 0 && G.body >= 0) w.body = G.body;
                                 continue;
                             }
-                            // Shut: the surface between the point and the neighbour's place seen from it.
-                            const double a = open_fraction(body, F.point, F.point + offset, on_surface(b));
+                            // Shut: the first surface between the point and the neighbour's place seen from it.
+                            double a = 1.0;
+                            int by = G.body;
+                            for (std::size_t c = 0; c < bodies_.size(); ++c) {
+                                const double f = open_fraction(bodies_[c], F.point, F.point + offset, on_surface(c));
+                                if (f < a) a = f, by = static_cast<int>(c);
+                            }
                             w.wall[d][side] = true;
+                            w.wall_body[d][side] = by;
                             w.distance[d][side] = std::max(a, 1e-9) * w.uniform[d][side];
                             w.wall_point[d][side] = F.point + a * offset;
+                            if (w.distance[d][side] < nearest && F.alpha >= 1.0)
+                                nearest = w.distance[d][side], w.body = by;
                             active = true;
                         }
                         w.active[d] = active;
@@ -266,7 +305,7 @@ void SharpForcing::find_wall_stencils() {
                         // The flow solver's control-volume width along d (core/operators/diffusion.cpp).
                         w.uniform_width[d] = is_u ? (d == 0 ? X.dc(i) : Y.w(j)) : (d == 0 ? X.w(i) : Y.dc(j));
                     }
-                    if (w.active[0] || w.active[1]) wall_stencils_.push_back(w);
+                    if ((w.active[0] || w.active[1]) && w.body >= 0) wall_stencils_.push_back(w);
                 }
         }
     }
@@ -309,7 +348,7 @@ double SharpForcing::stencil_coefficient(const WallStencil& w, int d, int side, 
 }
 
 void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
-                                       const std::function<void(const WallStencil&, double)>& account) {
+                                       const std::function<void(const WallStencil&, int, double)>& account) {
     if (!viscous_.applied_to) throw std::logic_error("SharpForcing: cut momentum needs the step's viscous operator");
     std::vector<double> values(wall_stencils_.size());
     for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
@@ -327,7 +366,7 @@ void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
             for (int side = 0; side < 2; ++side) {
                 double neighbour = side == 0 ? u_minus : u_plus;
                 if (w.wall[d][side]) {
-                    const Vec2 U = bodies_[w.body].velocity_at(w.wall_point[d][side]);
+                    const Vec2 U = bodies_[w.wall_body[d][side]].velocity_at(w.wall_point[d][side]);
                     neighbour = w.is_u ? U.x() : U.y();
                 }
                 const double rate =
@@ -341,7 +380,20 @@ void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
     for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
         const WallStencil& w = wall_stencils_[k];
         double& u = (w.is_u ? star.u : star.v)(w.i, w.j);
-        account(w, values[k] - u);
+        // Each wall part's flux to its own body (a face between two surfaces: the gap under a block on a slope), the
+        // rest of the change (the stencil's own redistribution) to the face's body.
+        double rest = values[k] - u;
+        for (int d = 0; d < 2; ++d)
+            for (int side = 0; side < 2; ++side) {
+                const int b = w.wall_body[d][side];
+                if (!w.active[d] || !w.wall[d][side] || b == w.body) continue;
+                const Vec2 U = bodies_[b].velocity_at(w.wall_point[d][side]);
+                const double flux = dt * stencil_coefficient(w, d, side, true) / (w.width[d] * w.distance[d][side]) *
+                                    ((w.is_u ? U.x() : U.y()) - values[k]);
+                account(w, b, flux);
+                rest -= flux;
+            }
+        account(w, w.body, rest);
         u = values[k];
     }
 }
@@ -619,12 +671,12 @@ void SharpForcing::apply(Velocity& star, double dt) {
         sums[3 * f.body + 2] += cross(f.position - bodies_[f.body].state().centre, m);
     };
     if (cut_momentum_)
-        apply_wall_stencils(star, dt, [&](const WallStencil& w, double change) {
+        apply_wall_stencils(star, dt, [&](const WallStencil& w, int body, double change) {
             const LocalAxis& X = grid_.lx();
             const LocalAxis& Y = grid_.ly();
             const Vec2 at = w.is_u ? Vec2(X.f(w.i), Y.c(w.j)) : Vec2(X.c(w.i), Y.f(w.j));
             const double volume = w.is_u ? X.dc(w.i) * Y.w(w.j) : X.w(w.i) * Y.dc(w.j);
-            account(ForcedFace{w.i, w.j, w.body, volume, at, 0.0, at, Vec2(0.0, 0.0)}, w.is_u, change);
+            account(ForcedFace{w.i, w.j, body, volume, at, 0.0, at, Vec2(0.0, 0.0)}, w.is_u, change);
         });
     for (auto [c, is_u] : {std::pair{&u_, true}, std::pair{&v_, false}}) {
         Field2D& field = is_u ? star.u : star.v;

@@ -66,7 +66,9 @@
 // second a face a sliver from the surface (held to U_b) and the same face shut (a mirror) differed in what the
 // convection read, and a k-epsilon block held in a stream lost 5 % of its drag as its front and back neared a grid
 // line. The momentum the wall terms give the fluid is the forcing's (measure (a)).
-// A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface.
+// A face in the reach of several bodies belongs to the one it is inside, else to the nearest surface; with cut
+// momentum a face is cut, as CutFaces counts it, by the body its inside end is in, and each wall part of its stencil
+// meets the first surface along its line, of whichever body (a block resting on a slope: the faces of the gap).
 // The pressure: with forcing faces it is solved on the whole grid (the fast solvers stay); the projection then moves
 // the forced faces by dt grad(phi): measure_slip() reports it (0.5 % of U_max on DFG 2D-1 at D/h 40, up to 10 % of U
 // at the front corners of a square moving across the grid). With ghost faces the cells inside the bodies leave the
@@ -207,8 +209,11 @@ private:
     struct FaceCut {
         double alpha;
         Vec2 point;
+        int body = -1;  // face_cut_any(): the body that shuts it whole or in part (-1: open whole)
     };
     FaceCut face_cut(std::size_t b, bool is_u, int i, int j) const;
+    // Against every body, as CutFaces counts it: cut by the body its inside end is in.
+    FaceCut face_cut_any(bool is_u, int i, int j) const;
     // The owned faces of one component within body b's reach and two cells (every owned face for a plane).
     struct FaceRange {
         int i0, i1, j0, j1;
@@ -223,6 +228,7 @@ private:
         double distance[2][2] = {{0, 0}, {0, 0}}, uniform[2][2] = {{0, 0}, {0, 0}};
         double width[2] = {0, 0}, uniform_width[2] = {0, 0};
         bool wall[2][2] = {{false, false}, {false, false}};
+        int wall_body[2][2] = {{0, 0}, {0, 0}};  // the body whose surface the wall part meets
         Vec2 wall_point[2][2] = {{Vec2(0, 0), Vec2(0, 0)}, {Vec2(0, 0), Vec2(0, 0)}};
     };
     void find_wall_stencils();
@@ -233,8 +239,9 @@ private:
     double stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall) const;
     double face_k(const WallStencil& w) const;  // k at a face: its fluid cells' mean (their neighbours' if none)
     // The wall terms on the predicted velocity (backward Euler in the face's own value); `account` receives each
-    // face's change.
-    void apply_wall_stencils(Velocity& star, double dt, const std::function<void(const WallStencil&, double)>& account);
+    // face's change by body (the body, the part of the change).
+    void apply_wall_stencils(Velocity& star, double dt,
+                             const std::function<void(const WallStencil&, int, double)>& account);
     bool any_moves() const;
     // Classified where the bodies are now: none moves and the grid did not move under them since.
     bool classified() const;

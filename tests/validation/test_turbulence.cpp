@@ -229,7 +229,9 @@ time: {end: 2.5}
         const double d = drag(oy, "immersed");
         EXPECT_NEAR(d, fitted, 0.02 * fitted) << oy;
         if (oy == 0.0) on_line = d;
-        if (oy == 0.99) EXPECT_NEAR(d, on_line, 0.01 * on_line);
+        if (oy == 0.99) {
+            EXPECT_NEAR(d, on_line, 0.01 * on_line);
+        }
     }
 }
 

@@ -63,6 +63,7 @@ chute_validation(sharp_force_continuity FixedBodies.SharpForceContinuousAsTheSur
 # Cut momentum (numerics.ibm.cut_momentum): the same bed continuous, and a face-on square's drag independent of its place.
 chute_validation(sharp_cut_momentum_couette FixedBodies.SharpCutMomentumHoldsCouetteFlowExactly 2 "validation")
 chute_validation(sharp_cut_momentum_continuity FixedBodies.SharpCutMomentumForceContinuousAsTheSurfaceCrossesFaces 2 "validation")
+chute_validation(sharp_cut_momentum_poiseuille FixedBodies.SharpCutMomentumHoldsPoiseuilleFlowBetweenTwoBodies 2 "validation")
 chute_validation(sharp_cut_momentum_face_on FixedBodies.SharpCutMomentumFaceOnSquareIndependentOfItsPlace 2 "validation")
 chute_validation(added_mass_square_face MovingBodies.AddedMassOfSquareAlongFaceNormal 2 "validation")
 chute_validation(added_mass_square_diagonal MovingBodies.AddedMassOfSquareAlongDiagonal 2 "validation")
