@@ -43,8 +43,8 @@ std::vector<CaseKey> ibm_keys() {
                     "only when the surface shuts it whole), the viscous term of a face beside the surface takes the "
                     "wall where it lies along each grid line (Shortley-Weller, from the middle of a cut face's open "
                     "part) and the convection is transported by the faces' cut fluxes: the force follows the body's "
-                    "place in its cells continuously (docs/validation.md, \"Sharp interface\", thirteenth step). "
-                    "Laminar runs only so far."},
+                    "place in its cells continuously (docs/validation.md, \"Sharp interface\", thirteenth and "
+                    "fourteenth steps). With k-epsilon the wall parts take the wall law's shear."},
         {.path = "numerics.ibm.sharp_profile",
          .type = K::choice,
          .default_value = "auto",

@@ -110,6 +110,7 @@ chute_validation(square_cylinder_re22000 Turbulence.SquareCylinderRe22000 2 "val
 chute_validation(square_cylinder_re22000_body_fitted Turbulence.SquareCylinderRe22000BodyFitted 2 "validation;slow")
 chute_validation(square_cylinder_re22000_sharp Turbulence.SquareCylinderRe22000SharpMatchesBodyFitted 2 "validation;slow")
 chute_validation(sharp_cut_momentum_held_block Turbulence.SharpCutMomentumHeldBlockIndependentOfItsPlace 2 "validation;slow")
+chute_validation(square_cylinder_re22000_cut_momentum Turbulence.SquareCylinderRe22000CutMomentumMatchesBodyFitted 2 "validation;slow")
 chute_validation(square_cylinder_re22000_empty Turbulence.SquareCylinderDomainWithoutBodyMakesNoTurbulence 2 "validation")
 
 # Fuzzing whole runs (test_case_fuzz_runs.cpp): the chute tool on the mutated example cases, two steps each,
