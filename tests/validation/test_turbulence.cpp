@@ -170,7 +170,7 @@ TEST(Turbulence, SquareCylinderRe22000SharpMatchesBodyFitted) {
 // from the faces beside them, where the ghost faces' mirror took it through the eddy viscosity of the corners. Measured
 // 2026-11-28 over t = 50-150: C_D (a) 2.0441, (b) 2.0444, C_L rms 0.738, St 0.1446 against the body-fitted 2.0442,
 // 0.736, 0.1443 (ghost faces without it: 2.0687, 0.777, 0.1448). Held to the bands (3 %, 10 %, 2 %) and, as
-// cut momentum meets them with room, to 1 % on C_D. Slow: about 15 minutes on 2 ranks.
+// cut momentum meets them with room, to 1 % on C_D. Slow: 5 minutes on 2 ranks (300 s, 2026-11-28).
 TEST(Turbulence, SquareCylinderRe22000CutMomentumMatchesBodyFitted) {
     const SheddingStatistics sharp = square_cylinder_re22000(
         {"numerics.ibm.interface=sharp", "numerics.ibm.sharp_faces=ghost", "numerics.ibm.cut_momentum=true"});
