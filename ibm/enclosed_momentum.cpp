@@ -5,11 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cut_faces.hpp"  // on_surface_tolerance
-
 namespace chute {
 
-EnclosedMomentum enclosed_momentum(const Grid& grid, const Velocity& vel, const Body& body, EnclosedFaces faces) {
+EnclosedMomentum enclosed_momentum(const Grid& grid, const Velocity& vel, const Body& body) {
     const auto& X = grid.lx();
     const auto& Y = grid.ly();
     const int nx = grid.nx(), ny = grid.ny();
@@ -20,7 +18,6 @@ EnclosedMomentum enclosed_momentum(const Grid& grid, const Velocity& vel, const 
         const double reach = body.outline().reach();
         auto fraction = [&](const Vec2& p, double h) {
             const double d = body.outline().signed_distance(rotated(p - c, -angle));
-            if (faces == EnclosedFaces::sharp) return d < on_surface_tolerance(h) ? 1.0 : 0.0;
             return std::clamp(0.5 - d / h, 0.0, 1.0);
         };
         for (int j = 0; j < ny; ++j) {

@@ -17,13 +17,7 @@ struct EnclosedMomentum {
     double angular = 0.0;        // m^4/s per m of depth, about the body's centre
 };
 
-// Which faces count. smeared: as above, for the diffuse interface whose surface is spread over cells; sharp: the
-// faces inside the outline (a face on it, within on_surface_tolerance, inside), wholly: the solid and ghost faces the
-// sharp interface sets (ibm/sharp_forcing.hpp), so that the forcing and the momentum it leaves inside are summed over
-// the same faces.
-enum class EnclosedFaces { smeared, sharp };
-// Sums over this rank's faces and reduces over all ranks.
-EnclosedMomentum enclosed_momentum(const Grid& grid, const Velocity& vel, const Body& body,
-                                   EnclosedFaces faces = EnclosedFaces::smeared);
+// Sums over this rank's faces and reduces over all ranks. (Ghost faces: SharpForcing::held_momentum.)
+EnclosedMomentum enclosed_momentum(const Grid& grid, const Velocity& vel, const Body& body);
 
 }  // namespace chute

@@ -61,7 +61,6 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
                  ? NearWall::surface
                  : NearWall::band),
       start_momentum_(bodies.size()),
-      start_velocity_(grid),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()),
       coupling_(bodies.size()),
@@ -91,11 +90,10 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
         sharp_->extend_pressure(flow_->pressure());
         flow_->refresh_ghosts();
     }
-    // Ghost faces: the momentum inside every body is taken at the end of the step over the faces then inside, from
-    // u^n and u^{n+1} alike (interface_wrench), so u^n is kept; otherwise inside each free body, over the faces
-    // inside now.
+    // The momentum the bodies' regions hold at the start of the step: ghost faces, every body's (SharpForcing::
+    // held_momentum, the forcing placed where the bodies are now); otherwise each free body's, over the faces inside.
     if (cut_)
-        start_velocity_ = start;
+        start_momentum_ = sharp_->held_momentum(start);
     else
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             if (bodies_[b].free()) start_momentum_[b] = enclosed_momentum(grid_, start, bodies_[b]);
@@ -169,15 +167,10 @@ Wrench ImmersedBoundary::interface_wrench(std::size_t b, const Velocity& vel, do
     const double rho = settings_.density, depth = settings_.depth;
     const BodyForcing& forcing = step_forcing_[b];
     // The fluid momentum inside the body: on the diffuse interface over a smeared outline, now against the start of
-    // the step. Ghost faces: over the solid and ghost faces at the body's place at the step's end, from u^n and
-    // u^{n+1}, the forcing's own faces: the rate of change of a fixed set's momentum is the forcing plus what
-    // crossed its sides, the force on the body. (The smeared set counted fluid faces half a cell out, whose change
-    // the projection makes, and ghost faces by halves: the square's start read an added mass 0.10 rho d^2 above its
-    // potential flow's; tests/unit/test_sharp_coupling.cpp.)
-    const EnclosedFaces faces = cut_ ? EnclosedFaces::sharp : EnclosedFaces::smeared;
-    const EnclosedMomentum P = enclosed_momentum(grid_, vel, bodies_[b], faces);
-    const EnclosedMomentum P0 =
-        cut_ ? enclosed_momentum(grid_, start_velocity_, bodies_[b], faces) : start_momentum_[b];
+    // the step. Ghost faces: the momentum the body's region holds (SharpForcing::held_momentum) now against the start
+    // of the step, so that the force is the momentum the fluid gained, to round-off over any number of steps.
+    const EnclosedMomentum P = cut_ ? sharp_->held_momentum(vel)[b] : enclosed_momentum(grid_, vel, bodies_[b]);
+    const EnclosedMomentum& P0 = start_momentum_[b];
     Wrench w;
     w.force = rho * depth * (-forcing.momentum_rate + (P.linear - P0.linear) / dt);
     w.torque = rho * depth * (-forcing.torque_rate + (P.angular - P0.angular) / dt);

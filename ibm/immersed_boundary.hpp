@@ -13,8 +13,8 @@
 //                                      F = rho depth ( -sum_l F_l dV_l + (P^{n+1} - P^n) / dt )
 //   measure(u^{n+1}, p^{n+1/2})      the hydrodynamic force and torque on each body, two independent ways:
 //     (a) from the forcing: for a free body, and for every body on ghost faces, the wrench above (ghost faces:
-//         the momentum over the forcing's own faces at the step's end, and the projection's pressure increment
-//         through the cut cells' shut parts); on the diffuse interface and forcing faces, for a fixed or
+//         P the momentum the body's region holds, SharpForcing::held_momentum, and the projection's pressure
+//         increment through the cut cells' shut parts); on the diffuse interface and forcing faces, for a fixed or
 //         prescribed body, the rigid-body form of the internal fluid term (Uhlmann 2005, eq. 23 and 28),
 //           F = rho depth ( -sum_l F_l dV_l + A dU_c/dt ),   M = rho depth ( -sum_l r_l x F_l dV_l + J domega/dt )
 //         A the area and J the polar moment of area of the body: the fluid inside the outline moves with it;
@@ -106,8 +106,7 @@ private:
     // The wrench of the step on body b from the forcing, the momentum inside and (ghost faces) the pressure increment:
     // measure (a) of a free body, and of every body on ghost faces.
     Wrench interface_wrench(std::size_t b, const Velocity& vel, double dt) const;
-    std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body
-    Velocity start_velocity_;                       // ghost faces: u^n
+    std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body (ghost faces: of every body)
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
     // Ghost faces, per free body: its free degrees of freedom (0 x, 1 y, 2 rotation), their unit motions' shut-face

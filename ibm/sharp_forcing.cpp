@@ -401,6 +401,14 @@ void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
 void SharpForcing::classify() {
     classify_component(true, u_);
     classify_component(false, v_);
+    // The faces held_momentum() counts as the bodies': those the forcing sets as the bodies' (a face the body left
+    // since, set from the profile in the step it opens, is the fluid's).
+    for (auto [c, by] : {std::pair{&u_, &forced_by_u_}, std::pair{&v_, &forced_by_v_}}) {
+        by->assign(face_keys(), -1);
+        for (const std::vector<ForcedFace>* faces : {&c->solid, &c->forcing})
+            for (const ForcedFace& f : *faces)
+                if (!f.fresh) (*by)[face_key(f.i, f.j)] = f.body;
+    }
     if (cut_momentum_) find_wall_stencils();
     find_covered_cells();
     if (ghost_) {
@@ -416,6 +424,64 @@ void SharpForcing::classify() {
     }
     placed_ = true;
     placement_.computed();
+}
+
+std::vector<EnclosedMomentum> SharpForcing::held_momentum(const Velocity& vel) const {
+    const LocalAxis& X = grid_.lx();
+    const LocalAxis& Y = grid_.ly();
+    std::vector<double> sums(3 * bodies_.size(), 0.0);  // x, y and moment per body
+    if (placed_)
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            const Body& body = bodies_[b];
+            if (!body.outline().closed()) continue;  // a plane or segment holds no fluid of its own
+            const Vec2 c = body.state().centre;
+            for (const bool is_u : {true, false}) {
+                const std::vector<int>& by = is_u ? forced_by_u_ : forced_by_v_;
+                const Field2D& field = is_u ? vel.u : vel.v;
+                const auto [i0, i1, j0, j1] = faces_in_reach(b, is_u);
+                for (int j = j0; j <= j1; ++j)
+                    for (int i = i0; i <= i1; ++i) {
+                        const int owner = by[face_key(i, j)];
+                        if (owner >= 0 && owner != static_cast<int>(b)) continue;
+                        const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
+                        const double dx = is_u ? X.dc(i) : X.w(i), dy = is_u ? Y.w(j) : Y.dc(j);
+                        // beta: 1/2 - phi / w along the normal n, w = |n_x| dx + |n_y| dy the volume's extent.
+                        const double phi = body.outline().signed_distance(body.to_body(p));
+                        double beta = phi < 0.0 ? 1.0 : 0.0, w = 0.0;
+                        if (std::abs(phi) < 0.5 * (dx + dy)) {
+                            const Vec2 n = body.direction_to_world(body.outline().nearest(body.to_body(p)).normal);
+                            w = std::abs(n.x()) * dx + std::abs(n.y()) * dy;
+                            beta = std::clamp(0.5 - phi / w, 0.0, 1.0);
+                        }
+                        const double u = field(i, j);
+                        double held = beta * u;
+                        if (owner >= 0) {
+                            // The fluid part of a forced face's volume: from the surface out to w / 2 + phi, where
+                            // the profile the ghost holds (carried through the wall from U_b, over L = |phi|, at
+                            // least half the extent) has the mean U_b + (U_b - u) (w / 2 + phi) / (2 L).
+                            const Vec2 U = body.velocity_at(p);
+                            const double Ub = is_u ? U.x() : U.y();
+                            const double outer = (1.0 - beta) * w;
+                            const double mean =
+                                outer > 0.0 ? Ub + (Ub - u) * outer / (2.0 * std::max(-phi, 0.5 * w)) : Ub;
+                            held = u - (1.0 - beta) * mean;
+                        }
+                        if (held == 0.0) continue;
+                        const Vec2 m = (is_u ? Vec2(held, 0.0) : Vec2(0.0, held)) * (dx * dy);
+                        sums[3 * b] += m.x();
+                        sums[3 * b + 1] += m.y();
+                        sums[3 * b + 2] += cross(p - c, m);
+                    }
+            }
+        }
+    if (grid_.size() > 1)
+        MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()), MPI_DOUBLE, MPI_SUM, grid_.comm());
+    std::vector<EnclosedMomentum> out(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        out[b].linear = Vec2(sums[3 * b], sums[3 * b + 1]);
+        out[b].angular = sums[3 * b + 2];
+    }
+    return out;
 }
 
 std::pair<double, double> SharpForcing::end_distances(std::size_t b, bool is_u, int i, int j) const {

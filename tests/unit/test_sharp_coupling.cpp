@@ -21,12 +21,23 @@ using namespace chute;
 
 namespace {
 
-// The unit square of falling_square.hpp at 16 cells across on the sharp interface, 0.3 cell off the grid lines.
-CaseConfig sharp_falling_square(double density) {
-    return parse_case_text(falling_square_case(64, 128),
+// The unit square of falling_square.hpp at 16 cells across (`refinement` times that) on the sharp interface, 0.3 cell
+// off the grid lines.
+CaseConfig sharp_falling_square(double density, int refinement = 1) {
+    const std::string offset = std::to_string(0.3 / (16.0 * refinement));
+    return parse_case_text(falling_square_case(64 * refinement, 128 * refinement),
                            {"bodies.square.density=" + std::to_string(density), "bodies.square.carrier=immersed",
-                            "bodies.square.centre=[0.01875, 0.01875]", "numerics.ibm.interface=sharp",
+                            "bodies.square.centre=[" + offset + ", " + offset + "]", "numerics.ibm.interface=sharp",
                             "numerics.ibm.sharp_faces=ghost", "numerics.poisson={tolerance: 1.0e-12}"});
+}
+
+// The first step's added mass, -F / (rho a), and the cut problem's (the response's M_yy / rho).
+std::pair<double, double> start_added_mass(double density, int refinement) {
+    Model model(sharp_falling_square(density, refinement), MPI_COMM_WORLD);
+    take_step(model, model.stable_dt());
+    const BodyForces f = measure_forces(model).at(0);
+    const double a = model.carrier().bodies()[0].state().acceleration.y();
+    return {-f.forcing.y() / a / 1000.0, (*model.carrier().added_mass(0))(1, 1) / 1000.0};
 }
 
 }  // namespace
@@ -37,9 +48,13 @@ CaseConfig sharp_falling_square(double density) {
 // displaces rises smoothly, its acceleration never above the start's (m - m_f) g / (m + M).
 // The added mass the cut problem finds is the square's in this channel: 1.1885 rho d^2 unbounded (Sedov 1965), 1.30
 // with the side walls 1.5 d away on the body-fitted carrier at 8 cells across (test_body_fitted.cpp); measured here
-// 1.335 at 16 cells across. The first step answers with a little more (measured 1.430 light, 1.419 heavy, from
-// -F / a): the ghost faces' mirrored values, which the cut faces' open parts carry, answer the body's velocity too,
-// and the response (the shut parts alone) leaves them out; held to 10 %.
+// 1.335 at 16 cells across. The first step answers with more (from -F / a): the force counts the momentum the fluid
+// gains, and the fluid's share of the faces beside the surface (SharpForcing::held_momentum: the part of each face's
+// volume outside the body) starts with the body's velocity in that step, a layer the response (the shut parts'
+// pressure alone) leaves out. It is a layer of cells: measured 1.4885 / 1.4623 (light / heavy) against 1.3346 at 16
+// cells, 1.4187 / 1.4073 against 1.3468 at 32 (+11.5 / +9.6 %, then +5.3 / +4.5 %: the excess halves), so held to
+// first order: the excess at 32 cells at most 0.65 of that at 16. (The set of faces whose centres are inside, the
+// measure before, read 1.430 / 1.419 at 16 cells.)
 // Before (the pressure a step late, no response) the study's block diverged as it neared the bed and its start
 // kept 93 % of a 2.2 m/s release speed where its added mass leaves 64 % (docs/validation.md, "Sharp interface",
 // seventh step).
@@ -58,7 +73,14 @@ TEST(SharpCoupling, FreeBodyIsCoupledExactlyEveryStep) {
                 ca = M(1, 1) / m_f;
                 a_start = (m - m_f) * -g / (m + M(1, 1));
                 const double start_ca = -f.forcing.y() / s.acceleration.y() / m_f;
-                EXPECT_NEAR(start_ca, ca, 0.1 * ca) << "density " << density;
+                const auto [fine_start, fine_ca] = start_added_mass(density, 2);
+                int me = 0;
+                MPI_Comm_rank(MPI_COMM_WORLD, &me);
+                if (me == 0)
+                    std::printf("density %.0f: first step's C_a %.4f against %.4f (16 cells), %.4f against %.4f (32)\n",
+                                density, start_ca, ca, fine_start, fine_ca);
+                EXPECT_GT(start_ca, ca);
+                EXPECT_LT(fine_start - fine_ca, 0.65 * (start_ca - ca)) << "density " << density;
                 EXPECT_EQ(M(0, 0), 0.0);  // x is locked: not solved for
                 // The square sits 0.3 cell off the channel's middle: a little sideways push (measured 0.36 %).
                 EXPECT_NEAR(M(0, 1), 0.0, 0.01 * M(1, 1));

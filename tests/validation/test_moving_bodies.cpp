@@ -359,3 +359,48 @@ TEST(MovingBodies, GalileanPairStudyBlockSharpInAWindow) {
     EXPECT_LT(r.ripple, 0.01);
     EXPECT_LT(r.trend_ripple, 0.01);
 }
+
+// Cut momentum's measure (a) on a body crossing the grid (the sharp-corners issue, item 2), in the pair that is exact:
+// a 6 x 6 box periodic both ways, the body moving at U = 1 through fluid at rest, and the same body held with the
+// fluid starting at U everywhere. With no walls the box's momentum is free in both frames and the two problems are the
+// same Galilean transform of each other; what differs is the body crossing the cells. Re = U d / nu = 100, d = 1 at 20
+// cells, central convection (a limiter's dissipation follows the velocity relative to the grid: with van Leer the
+// diffuse carrier's pair differs by 1-2 %), dt = 6.25 ms, compared over t = 0.75-2 (the start's transient past, 25
+// cells of travel). The measure is the momentum the fluid gains (SharpForcing::held_momentum); the set of faces whose
+// centres are inside, taken at the step's end, read the moving circle 15 % under the held one and the square 1 %
+// (docs/validation.md, "Sharp interface", fifteenth step). Target as for the other pairs: moving / fixed within 1 %.
+// The force's ripple as the body crosses the cells (rms of moving - fixed about its mean, about 7 % of the drag) is
+// printed, not held to the 1 % target: it is what is left of item 2.
+namespace {
+
+void expect_periodic_galilean_pair(const std::string& shape) {
+    const std::string common = R"(
+domain:
+  x: {start: -3.0, end: 3.0, cells: 120}
+  y: {start: -3.0, end: 3.0, cells: 120}
+fluid: {density: 1.0, viscosity: 0.01}
+boundaries: {left: {type: periodic}, right: {type: periodic}, bottom: {type: periodic}, top: {type: periodic}}
+numerics:
+  convection: central
+  dt: 0.00625
+  ibm: {interface: sharp, sharp_faces: ghost, cut_momentum: true}
+time: {end: 2.0}
+)";
+    const CaseConfig moving = parse_case_text(common + "bodies:\n  block:\n    " + shape +
+                                              "\n    motion: {type: constant_velocity, velocity: [0.0, -1.0]}\n");
+    const CaseConfig fixed =
+        parse_case_text(common + "initial: {velocity: [0.0, 1.0]}\nbodies:\n  block:\n    " + shape + "\n");
+    // The fluid passes both bodies along +y: the drag points along +y in both frames.
+    const GalileanPair r = galilean_pair(moving, fixed, Vec2(0.0, 1.0), 1.0, 0.75, 2.0);
+    EXPECT_NEAR(r.moving_mean / r.fixed_mean, 1.0, 0.01);
+}
+
+}  // namespace
+
+TEST(MovingBodies, GalileanPairSharpCutMomentumCircle) {
+    expect_periodic_galilean_pair("shape: circle\n    centre: [0.0, 0.0]\n    diameter: 1.0");
+}
+
+TEST(MovingBodies, GalileanPairSharpCutMomentumSquare) {
+    expect_periodic_galilean_pair("shape: rectangle\n    centre: [0.0, 0.0]\n    size: [1.0, 1.0]");
+}

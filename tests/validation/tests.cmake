@@ -76,6 +76,8 @@ chute_validation(inclined_plane_no_through_flow MovingBodies.NoFlowThroughAnIncl
 chute_validation(galilean_pair_square_re100 MovingBodies.GalileanPairSquareRe100 2 "validation;slow")
 chute_validation(galilean_pair_study_block MovingBodies.GalileanPairStudyBlockAtTerminalSpeed 2 "validation;slow;known_failure")
 chute_validation(galilean_pair_study_block_sharp MovingBodies.GalileanPairStudyBlockSharpInAWindow 2 "validation;slow")
+chute_validation(galilean_pair_sharp_circle MovingBodies.GalileanPairSharpCutMomentumCircle 2 "validation")
+chute_validation(galilean_pair_sharp_square MovingBodies.GalileanPairSharpCutMomentumSquare 2 "validation")
 chute_validation(cylinder_re40 BluffBodies.CylinderRe40 2 "validation;slow")
 chute_validation(cylinder_re100 BluffBodies.CylinderRe100 2 "validation;slow")
 chute_validation(square_cylinder_re100 BluffBodies.SquareCylinderRe100 2 "validation;slow")
