@@ -61,6 +61,7 @@ ImmersedBoundary::ImmersedBoundary(const Grid& grid, const ImmersedBoundarySetti
                  ? NearWall::surface
                  : NearWall::band),
       start_momentum_(bodies.size()),
+      start_centre_(bodies.size(), Vec2::Zero()),
       step_forcing_(bodies.size()),
       wrench_(bodies.size()),
       coupling_(bodies.size()),
@@ -92,6 +93,7 @@ void ImmersedBoundary::begin_step(const Velocity& start) {
     }
     // The momentum the bodies' regions hold at the start of the step: ghost faces, every body's (SharpForcing::
     // held_momentum, the forcing placed where the bodies are now); otherwise each free body's, over the faces inside.
+    for (std::size_t b = 0; b < bodies_.size(); ++b) start_centre_[b] = bodies_[b].state().centre;
     if (cut_)
         start_momentum_ = sharp_->held_momentum(start);
     else
@@ -170,7 +172,9 @@ Wrench ImmersedBoundary::interface_wrench(std::size_t b, const Velocity& vel, do
     // the step. Ghost faces: the momentum the body's region holds (SharpForcing::held_momentum) now against the start
     // of the step, so that the force is the momentum the fluid gained, to round-off over any number of steps.
     const EnclosedMomentum P = cut_ ? sharp_->held_momentum(vel)[b] : enclosed_momentum(grid_, vel, bodies_[b]);
-    const EnclosedMomentum& P0 = start_momentum_[b];
+    // Both moments about the body's centre now: the start's was taken about the centre then.
+    EnclosedMomentum P0 = start_momentum_[b];
+    P0.angular -= cross(bodies_[b].state().centre - start_centre_[b], P0.linear);
     Wrench w;
     w.force = rho * depth * (-forcing.momentum_rate + (P.linear - P0.linear) / dt);
     w.torque = rho * depth * (-forcing.torque_rate + (P.angular - P0.angular) / dt);

@@ -107,6 +107,7 @@ private:
     // measure (a) of a free body, and of every body on ghost faces.
     Wrench interface_wrench(std::size_t b, const Velocity& vel, double dt) const;
     std::vector<EnclosedMomentum> start_momentum_;  // P^n of each free body (ghost faces: of every body)
+    std::vector<Vec2> start_centre_;                // the centres P^n's moments are about
     std::vector<BodyForcing> step_forcing_;         // the forcing of the step, summed over its passes
     std::vector<Wrench> wrench_;                    // the last hydrodynamic wrench of each free body
     // Ghost faces, per free body: its free degrees of freedom (0 x, 1 y, 2 rotation), their unit motions' shut-face
