@@ -223,6 +223,20 @@ SharpForcing::FaceCut SharpForcing::face_cut(std::size_t b, bool is_u, int i, in
 }
 
 SharpForcing::FaceCut SharpForcing::face_cut_any(bool is_u, int i, int j) const {
+    // Asked about each face and its neighbours several times per classification: kept per face key until the next.
+    const bool keyed = i >= 0 && j >= 0 && i <= grid_.nx() && j <= grid_.ny();
+    std::vector<FaceCut>& cache = face_cuts_[is_u ? 0 : 1];
+    if (keyed) {
+        if (cache.empty()) cache.assign(face_keys(), FaceCut{-1.0, Vec2::Zero(), -1});
+        const FaceCut& kept = cache[face_key(i, j)];
+        if (kept.alpha >= 0.0) return kept;
+    }
+    const FaceCut cut = face_cut_across_bodies(is_u, i, j);
+    if (keyed) cache[face_key(i, j)] = cut;
+    return cut;
+}
+
+SharpForcing::FaceCut SharpForcing::face_cut_across_bodies(bool is_u, int i, int j) const {
     // As CutFaces counts a face: each end's distance to the nearest surface, the face cut by the body its inside end
     // is in (the deeper end's when both are).
     double ends[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -330,13 +344,11 @@ double SharpForcing::face_k(const WallStencil& w) const {
     return 0.0;
 }
 
-double SharpForcing::stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall) const {
+double SharpForcing::stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall, double k) const {
     if (!viscous_.stress_form) return viscosity_;
     const bool normal = (d == 0) == w.is_u;  // the flux along the component's own axis: a normal stress
-    if (at_wall && !normal && wall_turbulence_) {
-        const double y = w.distance[d][side];
-        return viscosity_ + wall_turbulence_->wall_viscosity(face_k(w), y);
-    }
+    if (at_wall && !normal && wall_turbulence_)
+        return viscosity_ + wall_turbulence_->wall_viscosity(k, w.distance[d][side]);
     const EddyViscosity* eddy = viscous_.eddy;
     if (normal) {
         // The cell between the face and its neighbour on that side (viscous_stress.cpp).
@@ -350,55 +362,67 @@ double SharpForcing::stencil_coefficient(const WallStencil& w, int d, int side, 
 void SharpForcing::apply_wall_stencils(Velocity& star, double dt,
                                        const std::function<void(const WallStencil&, int, double)>& account) {
     if (!viscous_.applied_to) throw std::logic_error("SharpForcing: cut momentum needs the step's viscous operator");
-    std::vector<double> values(wall_stencils_.size());
+    struct Solved {
+        double value;
+        double rate[2][2];        // dt K / (width distance) of each part
+        double wall_speed[2][2];  // the wall's velocity component on the wall parts
+    };
+    std::vector<Solved> solved(wall_stencils_.size());
     for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
         const WallStencil& w = wall_stencils_[k];
+        Solved& r = solved[k];
         const Field2D& start = w.is_u ? viscous_.applied_to->u : viscous_.applied_to->v;
         const double u0 = start(w.i, w.j);
+        // k of the face's cells, for the wall law's shear (once per stencil).
+        const bool shear_wall = wall_turbulence_ && viscous_.stress_form &&
+                                (w.is_u ? w.wall[1][0] || w.wall[1][1] : w.wall[0][0] || w.wall[0][1]);
+        const double k_face = shear_wall ? face_k(w) : 0.0;
         double sum = (w.is_u ? star.u : star.v)(w.i, w.j), diagonal = 1.0;
         for (int d = 0; d < 2; ++d) {
             if (!w.active[d]) continue;
             const double u_minus = start(d == 0 ? w.i - 1 : w.i, d == 0 ? w.j : w.j - 1);
             const double u_plus = start(d == 0 ? w.i + 1 : w.i, d == 0 ? w.j : w.j + 1);
-            const double uniform_plus = stencil_coefficient(w, d, 1, false) * (u_plus - u0) / w.uniform[d][1];
-            const double uniform_minus = stencil_coefficient(w, d, 0, false) * (u0 - u_minus) / w.uniform[d][0];
+            const double uniform_plus = stencil_coefficient(w, d, 1, false, k_face) * (u_plus - u0) / w.uniform[d][1];
+            const double uniform_minus = stencil_coefficient(w, d, 0, false, k_face) * (u0 - u_minus) / w.uniform[d][0];
             sum -= dt * (uniform_plus - uniform_minus) / w.uniform_width[d];
             for (int side = 0; side < 2; ++side) {
                 double neighbour = side == 0 ? u_minus : u_plus;
                 if (w.wall[d][side]) {
                     const Vec2 U = bodies_[w.wall_body[d][side]].velocity_at(w.wall_point[d][side]);
                     neighbour = w.is_u ? U.x() : U.y();
+                    r.wall_speed[d][side] = neighbour;
                 }
                 const double rate =
-                    dt * stencil_coefficient(w, d, side, w.wall[d][side]) / (w.width[d] * w.distance[d][side]);
+                    dt * stencil_coefficient(w, d, side, w.wall[d][side], k_face) / (w.width[d] * w.distance[d][side]);
+                r.rate[d][side] = rate;
                 sum += rate * neighbour;
                 diagonal += rate;
             }
         }
-        values[k] = sum / diagonal;
+        r.value = sum / diagonal;
     }
     for (std::size_t k = 0; k < wall_stencils_.size(); ++k) {
         const WallStencil& w = wall_stencils_[k];
+        const Solved& r = solved[k];
         double& u = (w.is_u ? star.u : star.v)(w.i, w.j);
         // Each wall part's flux to its own body (a face between two surfaces: the gap under a block on a slope), the
         // rest of the change (the stencil's own redistribution) to the face's body.
-        double rest = values[k] - u;
+        double rest = r.value - u;
         for (int d = 0; d < 2; ++d)
             for (int side = 0; side < 2; ++side) {
                 const int b = w.wall_body[d][side];
                 if (!w.active[d] || !w.wall[d][side] || b == w.body) continue;
-                const Vec2 U = bodies_[b].velocity_at(w.wall_point[d][side]);
-                const double flux = dt * stencil_coefficient(w, d, side, true) / (w.width[d] * w.distance[d][side]) *
-                                    ((w.is_u ? U.x() : U.y()) - values[k]);
+                const double flux = r.rate[d][side] * (r.wall_speed[d][side] - r.value);
                 account(w, b, flux);
                 rest -= flux;
             }
         account(w, w.body, rest);
-        u = values[k];
+        u = r.value;
     }
 }
 
 void SharpForcing::classify() {
+    for (std::vector<FaceCut>& cache : face_cuts_) cache.clear();  // the bodies moved
     classify_component(true, u_);
     classify_component(false, v_);
     // The faces held_momentum() counts as the bodies': those the forcing sets as the bodies' (a face the body left
@@ -411,7 +435,7 @@ void SharpForcing::classify() {
     }
     if (cut_momentum_) find_wall_stencils();
     find_covered_cells();
-    if (ghost_) {
+    if (ghost_ && !cut_momentum_) {  // cut momentum's convection reads the cut fluxes instead
         wall_faces_.u.fill(0.0);
         wall_faces_.v.fill(0.0);
         // Strictly inside: a face on the surface (a wall on a grid line) holds the wall's own velocity, as a

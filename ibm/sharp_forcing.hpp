@@ -191,7 +191,8 @@ public:
     // Ghost faces: 1 on the faces strictly inside a body whose values the forcing sets (the ghost faces' mirror, the
     // body's velocity deeper in) as classified at the start of the step, 0 elsewhere (the faces a body left since are
     // fluid faces; a face on the surface holds the wall's own velocity, as a body-fitted wall's face); owned faces. The
-    // convection takes the wall's flux beside them (FlowSolver::set_wall_faces).
+    // convection takes the wall's flux beside them (FlowSolver::set_wall_faces). Not set with cut momentum, whose
+    // convection reads the cut fluxes (FlowSolver::PressureBoundary::cut_transport).
     const Velocity& wall_faces() const { return wall_faces_; }
     // The offsets, for a checkpoint: a restart continues bit for bit. Collective (gathered over the ranks).
     std::vector<double> open_flux_state() const;
@@ -233,8 +234,11 @@ private:
         int body = -1;  // face_cut_any(): the body that shuts it whole or in part (-1: open whole)
     };
     FaceCut face_cut(std::size_t b, bool is_u, int i, int j) const;
-    // Against every body, as CutFaces counts it: cut by the body its inside end is in.
+    // Against every body, as CutFaces counts it: cut by the body its inside end is in (kept per face until the next
+    // classification).
     FaceCut face_cut_any(bool is_u, int i, int j) const;
+    FaceCut face_cut_across_bodies(bool is_u, int i, int j) const;
+    mutable std::vector<FaceCut> face_cuts_[2];  // face_cut_any()'s, per component and face key (alpha < 0: not yet)
     // The owned faces of one component within body b's reach and two cells (every owned face for a plane).
     struct FaceRange {
         int i0, i1, j0, j1;
@@ -256,8 +260,8 @@ private:
     // The coefficient K of a wall stencil's flux K (u_side - u) / distance on one side: the flow solver's (nu, or with
     // the stress form 2 (nu + nu_t) of the cell between on a normal stress, nu + nu_t of the corner on a shear); on a
     // wall side across which the flux is a shear, with a turbulence model, nu + nu_w, the wall law's eddy viscosity
-    // at the wall's distance along the line for the face's k.
-    double stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall) const;
+    // at the wall's distance along the line for the face's k (face_k(), `k`).
+    double stencil_coefficient(const WallStencil& w, int d, int side, bool at_wall, double k) const;
     double face_k(const WallStencil& w) const;  // k at a face: its fluid cells' mean (their neighbours' if none)
     // The wall terms on the predicted velocity (backward Euler in the face's own value); `account` receives each
     // face's change by body (the body, the part of the change).
