@@ -83,6 +83,99 @@ double Outline::polar_moment() const {
     return j / 12.0;
 }
 
+namespace {
+
+// The part of the disk of radius r about the origin where X <= x and Y <= y: its area and first moment. Over X the
+// chord at X, |Y| <= s(X) = sqrt(r^2 - X^2), lies whole below y where s < y, is cut by y where |y| <= s (|X| <= a,
+// a = sqrt(r^2 - y^2)), and lies above it where s < -y. S and T are the integrals of s and 2 X s from -r.
+Outline::Part disk_quadrant(double r, double x, double y) {
+    const auto clamped = [r](double X) { return std::clamp(X, -r, r); };
+    const auto S = [&](double X) {
+        X = clamped(X);
+        return 0.5 * (X * std::sqrt(std::max(r * r - X * X, 0.0)) + r * r * std::asin(X / r)) +
+               0.25 * std::numbers::pi * r * r;
+    };
+    const auto T = [&](double X) {
+        X = clamped(X);
+        return -2.0 / 3.0 * std::pow(std::max(r * r - X * X, 0.0), 1.5);
+    };
+    Outline::Part part;
+    x = std::min(x, r);
+    if (x <= -r || y <= -r) return part;
+    if (y >= r) {
+        part.area = 2.0 * S(x);
+        part.moment.x() = T(x);
+        return part;
+    }
+    const double a = std::sqrt(r * r - y * y);
+    if (y > 0.0) {  // whole chords, symmetric about Y = 0
+        const double left = std::min(x, -a);
+        part.area += 2.0 * S(left);
+        part.moment.x() += T(left);
+        if (x > a) {
+            part.area += 2.0 * (S(x) - S(a));
+            part.moment.x() += T(x) - T(a);
+        }
+    }
+    if (x > -a) {  // chords cut by y: Y from -s to y
+        const double m = std::min(x, a);
+        part.area += y * (m + a) + S(m) - S(-a);
+        part.moment.x() += 0.5 * y * (m * m - a * a) + 0.5 * (T(m) - T(-a));
+        part.moment.y() += 0.5 * ((y * y - r * r) * (m + a) + (m * m * m + a * a * a) / 3.0);
+    }
+    return part;
+}
+
+// The part of the polygon `p` on the side of the line X[axis] = at that `keep_below` names (Sutherland & Hodgman).
+std::vector<Vec2> clipped(const std::vector<Vec2>& p, int axis, double at, bool keep_below) {
+    std::vector<Vec2> out;
+    out.reserve(p.size() + 2);
+    const auto inside = [&](const Vec2& q) { return keep_below ? q[axis] <= at : q[axis] >= at; };
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        const Vec2& a = p[k];
+        const Vec2& b = p[(k + 1) % p.size()];
+        if (inside(a)) out.push_back(a);
+        if (inside(a) != inside(b)) {
+            const double t = (at - a[axis]) / (b[axis] - a[axis]);
+            Vec2 q = a + t * (b - a);
+            q[axis] = at;
+            out.push_back(q);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+Outline::Part Outline::part_in_box(const Vec2& centre, double angle, const Vec2& lo, const Vec2& hi) const {
+    Part part;
+    if (kind_ == Kind::segment || !(hi.x() > lo.x() && hi.y() > lo.y())) return part;
+    const Vec2 a = lo - centre, b = hi - centre;  // the box about the centre
+    if (kind_ == Kind::circle) {
+        const Part q[4] = {disk_quadrant(radius_, b.x(), b.y()), disk_quadrant(radius_, a.x(), b.y()),
+                           disk_quadrant(radius_, b.x(), a.y()), disk_quadrant(radius_, a.x(), a.y())};
+        part.area = std::max(q[0].area - q[1].area - q[2].area + q[3].area, 0.0);
+        part.moment = q[0].moment - q[1].moment - q[2].moment + q[3].moment;
+        return part;
+    }
+    // Counterclockwise (Outline::polygon) and still so once turned and clipped: the signed sums are the part's.
+    std::vector<Vec2> p;
+    p.reserve(vertices_.size());
+    for (const Vec2& v : vertices_) p.push_back(rotated(v, angle));
+    for (int axis = 0; axis < 2 && !p.empty(); ++axis) {
+        p = clipped(p, axis, a[axis], false);
+        if (!p.empty()) p = clipped(p, axis, b[axis], true);
+    }
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        const Vec2& v = p[k];
+        const Vec2& w = p[(k + 1) % p.size()];
+        const double c = cross(v, w);
+        part.area += 0.5 * c;
+        part.moment += (v + w) * (c / 6.0);
+    }
+    return part;
+}
+
 Vec2 Outline::support_point(const Vec2& d) const {
     if (kind_ == Kind::circle) return radius_ * d.normalized();
     Vec2 best = vertices_.front();

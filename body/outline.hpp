@@ -56,6 +56,18 @@ public:
     Vec2 support_point(const Vec2& d) const;
     // Markers spaced at most `spacing` apart, evenly along each edge (circle: along the arc).
     std::vector<Marker> markers(double spacing) const;
+    // The part of the solid inside the axis-aligned box [lo, hi] of the world, the outline placed with its origin at
+    // `centre` and turned by `angle` (closed outlines; nothing for an open line): its area and its first moment about
+    // `centre`, the integral of (x - centre) over it. Exact for a polygon (clipped by the box, Sutherland & Hodgman
+    // 1974, then the shoelace sums) and a circle (the disk's quadrants, by inclusion and exclusion). Over boxes that
+    // tile the plane the parts add up to area() and a zero moment to round-off wherever the body lies, so that a
+    // control volume's part inside a moving body is a state of the body's place with no error that changes with it
+    // (SharpForcing::held_momentum).
+    struct Part {
+        double area = 0.0;
+        Vec2 moment = Vec2::Zero();
+    };
+    Part part_in_box(const Vec2& centre, double angle, const Vec2& lo, const Vec2& hi) const;
     // Is the body-frame point inside the solid (closed outlines), or on its solid side (open lines)?
     bool contains(const Vec2& p) const;
     // Signed distance to the outline, negative inside the solid.

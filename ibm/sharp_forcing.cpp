@@ -469,32 +469,47 @@ std::vector<EnclosedMomentum> SharpForcing::held_momentum(const Velocity& vel) c
                         if (owner >= 0 && owner != static_cast<int>(b)) continue;
                         const Vec2 p = is_u ? Vec2(X.f(i), Y.c(j)) : Vec2(X.c(i), Y.f(j));
                         const double dx = is_u ? X.dc(i) : X.w(i), dy = is_u ? Y.w(j) : Y.dc(j);
-                        // beta: 1/2 - phi / w along the normal n, w = |n_x| dx + |n_y| dy the volume's extent.
+                        // The part of the face's control volume inside the body, its area and first moment about
+                        // the centre exactly (a part taken along the normal, 1/2 - phi / w, missed the corners: a
+                        // square carried at U through fluid moving with it read a force of 8 % of its drag that
+                        // changed with its place in its cells, and a disk a moment); w = |n_x| dx + |n_y| dy, the
+                        // volume's extent along the normal.
+                        const double volume = dx * dy;
+                        const Vec2 lo = is_u ? Vec2(X.c(i - 1), Y.f(j)) : Vec2(X.f(i), Y.c(j - 1));
+                        const Vec2 hi = is_u ? Vec2(X.c(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.c(j));
+                        const Vec2 whole_moment = volume * (0.5 * (lo + hi) - c);
                         const double phi = body.outline().signed_distance(body.to_body(p));
-                        double beta = phi < 0.0 ? 1.0 : 0.0, w = 0.0;
-                        if (std::abs(phi) < 0.5 * (dx + dy)) {
+                        Outline::Part inside;
+                        if (phi < 0.0) inside = {volume, whole_moment};
+                        double w = 0.0;
+                        const double farthest_corner = std::hypot(std::max(p.x() - lo.x(), hi.x() - p.x()),
+                                                                  std::max(p.y() - lo.y(), hi.y() - p.y()));
+                        if (std::abs(phi) < farthest_corner) {
                             const Vec2 n = body.direction_to_world(body.outline().nearest(body.to_body(p)).normal);
                             w = std::abs(n.x()) * dx + std::abs(n.y()) * dy;
-                            beta = std::clamp(0.5 - phi / w, 0.0, 1.0);
+                            inside = body.outline().part_in_box(c, body.state().angle, lo, hi);
                         }
+                        const double beta = std::clamp(inside.area / volume, 0.0, 1.0);
                         const double u = field(i, j);
-                        double held = beta * u;
+                        const Vec2 e = is_u ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
+                        Vec2 linear = inside.area * u * e;
+                        double angular = cross(inside.moment, u * e);
                         if (owner >= 0) {
                             // The fluid part of a forced face's volume: from the surface out to w / 2 + phi, where
                             // the profile the ghost holds (carried through the wall from U_b, over L = |phi|, at
-                            // least half the extent) has the mean U_b + (U_b - u) (w / 2 + phi) / (2 L).
+                            // least half the extent) has the mean U_b + (U_b - u) (w / 2 + phi) / (2 L). The face
+                            // holds V u at its place less that part's momentum at the part's centroid.
                             const Vec2 U = body.velocity_at(p);
                             const double Ub = is_u ? U.x() : U.y();
                             const double outer = (1.0 - beta) * w;
                             const double mean =
                                 outer > 0.0 ? Ub + (Ub - u) * outer / (2.0 * std::max(-phi, 0.5 * w)) : Ub;
-                            held = u - (1.0 - beta) * mean;
+                            linear = (volume * u - (volume - inside.area) * mean) * e;
+                            angular = cross(p - c, volume * u * e) - cross(whole_moment - inside.moment, mean * e);
                         }
-                        if (held == 0.0) continue;
-                        const Vec2 m = (is_u ? Vec2(held, 0.0) : Vec2(0.0, held)) * (dx * dy);
-                        sums[3 * b] += m.x();
-                        sums[3 * b + 1] += m.y();
-                        sums[3 * b + 2] += cross(p - c, m);
+                        sums[3 * b] += linear.x();
+                        sums[3 * b + 1] += linear.y();
+                        sums[3 * b + 2] += angular;
                     }
             }
         }

@@ -75,6 +75,48 @@ TEST(Outline, AreaMomentPerimeterAndMarkers) {
     EXPECT_GT(bed.markers(0.1).front().normal.y(), 0.99);
 }
 
+TEST(Outline, PartInABoxIsExactAndTilesToTheWhole) {
+    // Boxes that tile the plane share out the solid's area and a zero first moment about its centre to round-off
+    // wherever the body lies and however it is turned (the control volumes of SharpForcing::held_momentum); a box
+    // holding a known part gives that part exactly.
+    const Outline square = Outline::rectangle(1.0, 1.0);
+    const Outline circle = Outline::circle(1.0);
+    const Outline concave = Outline::polygon({{0, 0}, {2, 0}, {2, 2}, {1, 0.7}, {0, 2}});  // an arrowhead
+    for (const Outline* o : {&square, &circle, &concave})
+        for (const auto& [centre, angle] :
+             {std::pair{Vec2(0.013, -0.027), 0.0}, std::pair{Vec2(0.1, 0.2), 0.3}, std::pair{Vec2(-0.31, 0.05), 2.4}}) {
+            const double h = 0.07;
+            Outline::Part sum;
+            for (int j = -30; j < 30; ++j)
+                for (int i = -30; i < 30; ++i) {
+                    const Outline::Part part =
+                        o->part_in_box(centre, angle, Vec2(i * h, j * h), Vec2((i + 1) * h, (j + 1) * h));
+                    sum.area += part.area;
+                    sum.moment += part.moment;
+                }
+            EXPECT_NEAR(sum.area, o->area(), 1e-13 * o->area()) << "angle " << angle;
+            EXPECT_LT(sum.moment.norm(), 1e-13 * o->area()) << "angle " << angle;
+        }
+    // Known parts: a box over the unit square's corner holds a quarter of itself; the first quadrant holds a quarter
+    // of the square turned 45 degrees, and a quarter of the disk with its centroid 4 r / (3 pi) along each axis; a
+    // strip of the disk, 0 <= x <= r/2: r^2 (sqrt(3)/4 + pi/6), on the x axis.
+    const auto expect_part = [](const Outline::Part& part, double area, const Vec2& centroid) {
+        EXPECT_NEAR(part.area, area, 1e-15);
+        EXPECT_NEAR((part.moment - area * centroid).norm(), 0.0, 1e-15);
+    };
+    expect_part(square.part_in_box(Vec2::Zero(), 0.0, Vec2(0.25, 0.25), Vec2(0.75, 0.75)), 0.0625, Vec2(0.375, 0.375));
+    const double diagonal = std::sqrt(0.5);
+    expect_part(square.part_in_box(Vec2::Zero(), std::numbers::pi / 4, Vec2(0, 0), Vec2(1, 1)), 0.25,
+                Vec2(diagonal / 3, diagonal / 3));
+    const double r = 0.5, c = 4 * r / (3 * std::numbers::pi);
+    expect_part(circle.part_in_box(Vec2::Zero(), 0.0, Vec2(0, 0), Vec2(1, 1)), std::numbers::pi * r * r / 4,
+                Vec2(c, c));
+    const Outline::Part strip = circle.part_in_box(Vec2::Zero(), 0.0, Vec2(0, -1), Vec2(0.25, 1));
+    EXPECT_NEAR(strip.area, r * r * (std::sqrt(3.0) / 4 + std::numbers::pi / 6), 1e-15);
+    EXPECT_NEAR(strip.moment.y(), 0.0, 1e-15);
+    EXPECT_EQ(Outline::segment({0, 0}, {1, 0}).part_in_box(Vec2::Zero(), 0.0, Vec2(-1, -1), Vec2(1, 1)).area, 0.0);
+}
+
 TEST(PrescribedMotion, VelocityAndAccelerationAreDerivativesOfPosition) {
     for (MotionType type : {MotionType::constant_velocity, MotionType::oscillation, MotionType::uniform_acceleration}) {
         MotionConfig m;
