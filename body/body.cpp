@@ -112,7 +112,7 @@ Body::Body(const BodyConfig& c, const Vec2& domain_min, const Vec2& domain_max) 
             break;
     }
     motion_ = PrescribedMotion(c.motion, centre, angle);
-    state_ = motion_.at(0.0);
+    set_state(motion_.at(0.0));
 }
 
 }  // namespace chute

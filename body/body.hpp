@@ -54,17 +54,26 @@ public:
     bool free() const { return config_.motion.type == MotionType::free; }
     // Places the body at time t (prescribed motion; a free body stays where it is).
     void move_to(double t) {
-        if (!free()) state_ = motion_.at(t);
+        if (!free()) set_state(motion_.at(t));
     }
-    void set_state(const BodyState& s) { state_ = s; }
+    void set_state(const BodyState& s) {
+        state_ = s;
+        cos_ = std::cos(s.angle);
+        sin_ = std::sin(s.angle);
+    }
 
-    Vec2 to_world(const Vec2& r) const { return state_.centre + rotated(r, state_.angle); }
-    Vec2 direction_to_world(const Vec2& d) const { return rotated(d, state_.angle); }
+    // The turn by the body's angle, its cosine and sine kept with the state (the sharp interface asks for a body-frame
+    // point for every face near a surface, several times a step: sin and cos took 6 % of a moving square's run).
+    Vec2 to_world(const Vec2& r) const { return state_.centre + direction_to_world(r); }
+    Vec2 direction_to_world(const Vec2& d) const { return {cos_ * d.x() - sin_ * d.y(), sin_ * d.x() + cos_ * d.y()}; }
     Vec2 velocity_at(const Vec2& X) const {
         return state_.velocity + state_.angular_velocity * perp(X - state_.centre);
     }
     // The body-frame point of a world point X (the inverse of to_world).
-    Vec2 to_body(const Vec2& X) const { return rotated(X - state_.centre, -state_.angle); }
+    Vec2 to_body(const Vec2& X) const {
+        const Vec2 r = X - state_.centre;
+        return {cos_ * r.x() + sin_ * r.y(), -sin_ * r.x() + cos_ * r.y()};
+    }
     bool contains(const Vec2& X) const { return outline_.contains(to_body(X)); }
 
     double area() const { return outline_.area(); }
@@ -75,6 +84,7 @@ private:
     Outline outline_;
     PrescribedMotion motion_;
     BodyState state_;
+    double cos_ = 1.0, sin_ = 0.0;  // of state_.angle
 };
 
 }  // namespace chute
