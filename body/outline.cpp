@@ -159,9 +159,10 @@ Outline::Part Outline::part_in_box(const Vec2& centre, double angle, const Vec2&
         return part;
     }
     // Counterclockwise (Outline::polygon) and still so once turned and clipped: the signed sums are the part's.
+    const double c = std::cos(angle), s = std::sin(angle);  // once for all vertices (as rotated() turns them)
     std::vector<Vec2> p;
     p.reserve(vertices_.size());
-    for (const Vec2& v : vertices_) p.push_back(rotated(v, angle));
+    for (const Vec2& v : vertices_) p.push_back({c * v.x() - s * v.y(), s * v.x() + c * v.y()});
     for (int axis = 0; axis < 2 && !p.empty(); ++axis) {
         p = clipped(p, axis, a[axis], false);
         if (!p.empty()) p = clipped(p, axis, b[axis], true);
@@ -169,9 +170,9 @@ Outline::Part Outline::part_in_box(const Vec2& centre, double angle, const Vec2&
     for (std::size_t k = 0; k < p.size(); ++k) {
         const Vec2& v = p[k];
         const Vec2& w = p[(k + 1) % p.size()];
-        const double c = cross(v, w);
-        part.area += 0.5 * c;
-        part.moment += (v + w) * (c / 6.0);
+        const double twice = cross(v, w);  // twice the triangle (0, v, w)
+        part.area += 0.5 * twice;
+        part.moment += (v + w) * (twice / 6.0);
     }
     return part;
 }

@@ -478,14 +478,15 @@ std::vector<EnclosedMomentum> SharpForcing::held_momentum(const Velocity& vel) c
                         const Vec2 lo = is_u ? Vec2(X.c(i - 1), Y.f(j)) : Vec2(X.f(i), Y.c(j - 1));
                         const Vec2 hi = is_u ? Vec2(X.c(i), Y.f(j + 1)) : Vec2(X.f(i + 1), Y.c(j));
                         const Vec2 whole_moment = volume * (0.5 * (lo + hi) - c);
-                        const double phi = body.outline().signed_distance(body.to_body(p));
+                        const Vec2 local = body.to_body(p);
+                        const double phi = body.outline().signed_distance(local);
                         Outline::Part inside;
                         if (phi < 0.0) inside = {volume, whole_moment};
                         double w = 0.0;
                         const double farthest_corner = std::hypot(std::max(p.x() - lo.x(), hi.x() - p.x()),
                                                                   std::max(p.y() - lo.y(), hi.y() - p.y()));
                         if (std::abs(phi) < farthest_corner) {
-                            const Vec2 n = body.direction_to_world(body.outline().nearest(body.to_body(p)).normal);
+                            const Vec2 n = body.direction_to_world(body.outline().nearest(local).normal);
                             w = std::abs(n.x()) * dx + std::abs(n.y()) * dy;
                             inside = body.outline().part_in_box(c, body.state().angle, lo, hi);
                         }

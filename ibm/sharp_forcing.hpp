@@ -138,20 +138,21 @@ public:
     // about the body's centre:
     //   Q = sum over the faces the body forces (ghost and solid) of V (u - (1 - beta) u_o)
     //     + sum over the fluid faces of beta V u,
-    // beta the fraction of the face's control volume V inside the body (its area, Outline::area_in_box: over the
-    // volumes of a component beta V adds up to the body's area wherever it lies; w below is the volume's extent along
-    // the normal) and u_o the mean over the volume's outer part of the profile the ghost holds (carried through the
-    // wall from U_b over L = max(|phi|, w / 2): U_b + (U_b - u) (w / 2 + phi) / (2 L)). The flow holds M = sum V u over
-    // every face; M - Q is the fluid's part of each face's volume, at the face's velocity or, beside a forced face, the
-    // profile's. The body's force over a step is then -(forcing + projection) + (Q^{n+1} - Q^n) / dt, the momentum the
-    // fluid gained, to round-off over any number of steps (Q is a function of the state). The set of faces whose
-    // centres are inside, taken at the step's end from u^n and u^{n+1} alike, was not: each face a moving surface
-    // crossed left its change out, and the drag of a circle moved through still water read 15 % under the same circle
-    // held in the same stream, a square 1 % (docs/validation.md, "Sharp interface", fifteenth step). beta moves
-    // continuously with the body, and a face changes between forced and fluid where its value is the body's (cut
-    // momentum: a face shuts as its open part closes, held to the wall's velocity), so Q does not jump. In the step a
-    // body starts or stops at once, the outer parts' momentum answers too: a layer of cells (the first step's added
-    // mass +11 % at 16 cells across, +5 % at 32; tests/unit/test_sharp_coupling.cpp). Collective.
+    // beta the fraction of the face's control volume V inside the body (that part's area, Outline::part_in_box: over
+    // the volumes of a component beta V adds up to the body's area wherever it lies, and the moment takes each part's
+    // momentum at its centroid; w below is the volume's extent along the normal) and u_o the mean over the volume's
+    // outer part of the profile the ghost holds (carried through the wall from U_b over L = max(|phi|, w / 2): U_b +
+    // (U_b - u) (w / 2 + phi) / (2 L)). The flow holds M = sum V u over every face; M - Q is the fluid's part of each
+    // face's volume, at the face's velocity or, beside a forced face, the profile's. The body's force over a step is
+    // then -(forcing + projection) + (Q^{n+1} - Q^n) / dt, the momentum the fluid gained, to round-off over any number
+    // of steps (Q is a function of the state). The set of faces whose centres are inside, taken at the step's end from
+    // u^n and u^{n+1} alike, was not: each face a moving surface crossed left its change out, and the drag of a circle
+    // moved through still water read 15 % under the same circle held in the same stream, a square 1 %
+    // (docs/validation.md, "Sharp interface", fifteenth step). beta moves continuously with the body, and a face
+    // changes between forced and fluid where its value is the body's (cut momentum: a face shuts as its open part
+    // closes, held to the wall's velocity), so Q does not jump. In the step a body starts or stops at once, the outer
+    // parts' momentum answers too: a layer of cells (the first step's added mass +11 % at 16 cells across, +5 % at 32;
+    // tests/unit/test_sharp_coupling.cpp). Collective.
     std::vector<EnclosedMomentum> held_momentum(const Velocity& vel) const;
 
     // The faces of this rank the last apply() forced (for tests and diagnostics).
